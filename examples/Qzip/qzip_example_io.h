@@ -1,0 +1,212 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+// Small helpers shared by the Qzip examples (not part of the library): checked mesh input,
+// atomic mesh output, and a minimal command-line parser. Errors come back as a message;
+// nothing here prints or exits.
+
+#ifndef CGAL_QZIP_EXAMPLE_IO_H
+#define CGAL_QZIP_EXAMPLE_IO_H
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace qzip_example {
+
+/// Which face degrees `read_input_mesh()` accepts.
+enum class Accepted_faces { QUADS_ONLY, TRIANGLES_AND_QUADS, ANY_POLYGON };
+
+/// `true` if `a` and `b` both exist and are the same file (same device and inode; symbolic links followed).
+inline bool same_file(const std::string& a, const std::string& b)
+{
+  struct stat sa, sb;
+  if(::stat(a.c_str(), &sa) != 0 || ::stat(b.c_str(), &sb) != 0)
+    return false;
+  return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+/// Reads `path` into `mesh` (cleared first) and checks it. Returns `false` with a one-line message in `error`
+/// if the file is missing or unreadable, is not a valid polygon mesh (`CGAL::IO::read_polygon_mesh` fails,
+/// e.g. on non-manifold input, or `CGAL::is_valid_polygon_mesh` fails), has no face, has a non-finite
+/// coordinate, or has a face whose degree `accepted` does not allow.
+template <typename Mesh>
+bool read_input_mesh(const std::string& path, Mesh& mesh, std::string& error,
+                     Accepted_faces accepted = Accepted_faces::QUADS_ONLY)
+{
+  CGAL::clear(mesh);
+  struct stat st;
+  if(::stat(path.c_str(), &st) != 0)
+  {
+    error = "cannot open input '" + path + "': no such file";
+    return false;
+  }
+  if(!S_ISREG(st.st_mode))
+  {
+    error = "cannot open input '" + path + "': not a regular file";
+    return false;
+  }
+  if(!std::ifstream(path).good())
+  {
+    error = "cannot open input '" + path + "': permission denied or unreadable";
+    return false;
+  }
+  if(!CGAL::IO::read_polygon_mesh(path, mesh))
+  {
+    CGAL::clear(mesh);
+    error = "cannot read '" + path + "' as a polygon mesh (unsupported extension, malformed file, "
+            "or a non-manifold / non-orientable surface)";
+    return false;
+  }
+  if(!CGAL::is_valid_polygon_mesh(mesh))
+  {
+    CGAL::clear(mesh);
+    error = "'" + path + "' is not a valid polygon mesh";
+    return false;
+  }
+  if(faces(mesh).empty())
+  {
+    error = "'" + path + "' contains no face";
+    return false;
+  }
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  for(auto v : vertices(mesh))
+  {
+    const auto& p = get(vpm, v);
+    if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y()))
+       || !std::isfinite(CGAL::to_double(p.z())))
+    {
+      error = "'" + path + "' has a vertex with a NaN or infinite coordinate";
+      return false;
+    }
+  }
+  if(accepted != Accepted_faces::ANY_POLYGON)
+  {
+    for(auto f : faces(mesh))
+    {
+      std::size_t d = 0;
+      for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
+      {
+        (void)h;
+        ++d;
+      }
+      const bool ok = (d == 4) || (d == 3 && accepted == Accepted_faces::TRIANGLES_AND_QUADS);
+      if(!ok)
+      {
+        error = "'" + path + "' has a face of degree " + std::to_string(d) + "; only "
+                + (accepted == Accepted_faces::QUADS_ONLY ? "quads are" : "triangles and quads are")
+                + " accepted";
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+/// Writes `mesh` to `path` through a temporary file in the same directory, renamed over `path` once
+/// complete, so that `path` is never left half-written. Refuses (returns `false` with a message) when
+/// `path` is the same file as `input_path` (if given), or when the format (from the extension) is not
+/// supported or the file cannot be written.
+template <typename Mesh>
+bool write_output_mesh_atomically(const std::string& path, const Mesh& mesh, std::string& error,
+                                  const std::string& input_path = std::string())
+{
+  if(!input_path.empty() && same_file(path, input_path))
+  {
+    error = "output '" + path + "' is the input file; refusing to overwrite it";
+    return false;
+  }
+  const std::string::size_type slash = path.find_last_of('/');
+  const std::string dir = (slash == std::string::npos) ? std::string() : path.substr(0, slash + 1);
+  const std::string name = (slash == std::string::npos) ? path : path.substr(slash + 1);
+  const std::string::size_type dot = name.find_last_of('.');
+  if(name.empty() || dot == std::string::npos || dot == 0)
+  {
+    error = "output '" + path + "' has no file extension (use .off, .obj, .ply, ...)";
+    return false;
+  }
+  // keep the extension: CGAL::IO::write_polygon_mesh chooses the format from it
+  const std::string tmp = dir + "." + name.substr(0, dot) + ".tmp" + std::to_string(::getpid()) + name.substr(dot);
+  if(!CGAL::IO::write_polygon_mesh(tmp, mesh, CGAL::parameters::stream_precision(17)))
+  {
+    std::remove(tmp.c_str());
+    error = "cannot write '" + path + "' (unsupported extension or unwritable directory)";
+    return false;
+  }
+  if(std::rename(tmp.c_str(), path.c_str()) != 0)
+  {
+    std::remove(tmp.c_str());
+    error = "cannot rename the temporary file to '" + path + "'";
+    return false;
+  }
+  return true;
+}
+
+/// `true` if `flag` (e.g. `--json`) is among the arguments.
+inline bool has_flag(int argc, char** argv, const std::string& flag)
+{
+  for(int i = 1; i < argc; ++i)
+    if(flag == argv[i])
+      return true;
+  return false;
+}
+
+/// The value following option `name` (e.g. `--output out.off`), or `default_value` if absent.
+inline std::string option_value(int argc, char** argv, const std::string& name,
+                                const std::string& default_value = std::string())
+{
+  for(int i = 1; i + 1 < argc; ++i)
+    if(name == argv[i])
+      return argv[i + 1];
+  return default_value;
+}
+
+/// The arguments that are neither options (starting with `-`) nor values of `options_with_value`.
+inline std::vector<std::string> positional_arguments(int argc, char** argv,
+                                                     const std::set<std::string>& options_with_value = {})
+{
+  std::vector<std::string> out;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(options_with_value.count(a) > 0) { ++i; continue; }
+    if(!a.empty() && a[0] == '-') continue;
+    out.push_back(a);
+  }
+  return out;
+}
+
+/// The first argument starting with `-` that is neither in `flags` nor in `options_with_value`, or "" if none.
+inline std::string unknown_option(int argc, char** argv, const std::set<std::string>& flags,
+                                  const std::set<std::string>& options_with_value = {})
+{
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(options_with_value.count(a) > 0) { ++i; continue; }
+    if(!a.empty() && a[0] == '-' && flags.count(a) == 0)
+      return a;
+  }
+  return std::string();
+}
+
+} // namespace qzip_example
+
+#endif // CGAL_QZIP_EXAMPLE_IO_H

@@ -1,0 +1,121 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_INTERNAL_VERTEX_DEFECT_H
+#define CGAL_QZIP_INTERNAL_VERTEX_DEFECT_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/property_map.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace CGAL {
+namespace Qzip {
+namespace internal {
+
+// What one walk around a vertex tells: its valence, whether it lies on the border, and its defect.
+struct Vertex_defect_info
+{
+  std::size_t valence = 0;
+  bool on_border = false;
+  int defect = 0;
+};
+
+// Angle (radians, in [0, pi]) at `target(h, pm)` between the two edges of `face(h, pm)` incident to it,
+// i.e. between `h` (reversed) and `next(h, pm)`. A zero-length edge gives 0.
+template <typename PolygonMesh, typename VertexPointMap, typename GeomTraits>
+double corner_angle(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
+                    const PolygonMesh& pm, const VertexPointMap& vpm, const GeomTraits& gt)
+{
+  typedef typename GeomTraits::Vector_3 Vector_3;
+  const auto& pv = get(vpm, target(h, pm));
+  const Vector_3 a = gt.construct_vector_3_object()(pv, get(vpm, source(h, pm)));
+  const Vector_3 b = gt.construct_vector_3_object()(pv, get(vpm, target(next(h, pm), pm)));
+  const Vector_3 c = gt.construct_cross_product_vector_3_object()(a, b);
+  const double sin_part = std::sqrt(CGAL::to_double(gt.compute_squared_length_3_object()(c)));
+  const double cos_part = CGAL::to_double(gt.compute_scalar_product_3_object()(a, b));
+  return std::atan2(sin_part, cos_part);
+}
+
+// Number of quads that ideally fill a sector of angle `theta`: the closest multiple of pi/2, at least one.
+inline int ideal_number_of_faces(double theta)
+{
+  const double half_pi = 1.5707963267948966;
+  return (std::max)(1, static_cast<int>(std::floor(theta / half_pi + 0.5)));
+}
+
+// One walk around `v`: see `CGAL::Qzip::vertex_defect()` for the definition of the defect.
+template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap, typename GeomTraits>
+Vertex_defect_info
+vertex_defect_info(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                   const PolygonMesh& pm, const VertexPointMap& vpm,
+                   const EdgeIsConstrainedMap& ecm, const GeomTraits& gt)
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+
+  Vertex_defect_info info;
+  const halfedge_descriptor hv = halfedge(v, pm);
+  if(hv == GT::null_halfedge())
+    return info; // isolated vertex
+
+  auto is_cut = [&](halfedge_descriptor h) -> bool
+  {
+    return is_border_edge(h, pm) || get(ecm, edge(h, pm));
+  };
+
+  // the incoming halfedges h_0, h_1 = opposite(next(h_0)), ...: face(h_i) lies between edge(h_i)
+  // and edge(h_{i+1}) = edge(next(h_i)).
+  halfedge_descriptor start = GT::null_halfedge();
+  for(halfedge_descriptor h : halfedges_around_target(hv, pm))
+  {
+    ++info.valence;
+    if(is_border(h, pm) || is_border(opposite(h, pm), pm))
+      info.on_border = true;
+    if(start == GT::null_halfedge() && is_cut(h))
+      start = h;
+  }
+
+  if(start == GT::null_halfedge())
+  {
+    info.defect = static_cast<int>(info.valence) - 4;
+    return info;
+  }
+
+  // Walk the fan from a cut edge; border and constrained edges cut it into sectors.
+  double theta = 0;
+  int q = 0;
+  for(halfedge_descriptor h : halfedges_around_target(start, pm))
+  {
+    if(!is_border(h, pm))
+    {
+      theta += corner_angle(h, pm, vpm, gt);
+      ++q;
+    }
+    if(is_cut(next(h, pm)) && q > 0) // the sector ends at edge(next(h)); the walk ends at edge(start)
+    {
+      info.defect += q - ideal_number_of_faces(theta);
+      theta = 0;
+      q = 0;
+    }
+  }
+  return info;
+}
+
+} // namespace internal
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_INTERNAL_VERTEX_DEFECT_H

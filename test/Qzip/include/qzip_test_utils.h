@@ -1,0 +1,233 @@
+// Shared helpers of the Qzip tests: mesh builders, invariant checks, isomorphism of oriented meshes.
+#ifndef QZIP_TEST_UTILS_H
+#define QZIP_TEST_UTILS_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/boost/graph/properties_Polyhedron_3.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <string>
+#include <sys/stat.h>
+#include <unordered_map>
+#include <vector>
+
+namespace qzip_test {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Surface_mesh;
+typedef CGAL::Polyhedron_3<K> Polyhedron;
+
+#ifndef QZIP_SHARED_DATA_DIR
+#define QZIP_SHARED_DATA_DIR "../../../shared/data/quad"
+#endif
+
+inline bool file_exists(const std::string& p)
+{
+  struct stat st;
+  return ::stat(p.c_str(), &st) == 0;
+}
+
+/// the shared corpus folder, or "" (with a clear message) when it is absent.
+inline std::string shared_corpus_dir(const char* who)
+{
+  const std::string dir = QZIP_SHARED_DATA_DIR;
+  if(file_exists(dir + "/SOURCES.md")) return dir;
+  std::cout << "skipped (" << who << "): shared corpus not found at " << dir << std::endl;
+  return std::string();
+}
+
+inline std::vector<std::string> shared_corpus_files()
+{
+  return { "beast_quaddominant.obj", "blub_quadrangulated.obj", "gen_instantmeshes_bunny_boundary.obj",
+           "gen_instantmeshes_rocker_arm.obj", "gen_instantmeshes_turbine_quaddominant.obj",
+           "gen_quadriflow_anchor_sharp.obj", "gen_quadriflow_armadillo_107k.ply", "libigl_halftunnel.off",
+           "libigl_horse_quad.obj", "noisy_sphere_triquad.obj", "pmp_fandisk_quads.off",
+           "polylap_amo_quad.off", "polylap_loki.obj", "polylap_suzanne_half.obj",
+           "quadmixer_animal_horse.obj", "quadriflow_gargoyle.obj", "quadwild_joint.obj",
+           "quadwild_mnf07HeadFem.obj", "spot_quadrangulated.obj", "trimesh_quadknot.obj",
+           "trimesh_target.obj" };
+}
+
+template <typename Mesh>
+bool read_mesh(const std::string& path, Mesh& m)
+{
+  clear(m);
+  return CGAL::IO::read_polygon_mesh(path, m) && CGAL::is_valid_polygon_mesh(m);
+}
+
+/// an nx x ny grid of unit quads in the plane z = 0 (open, with a boundary).
+template <typename Mesh>
+void make_quad_grid(Mesh& m, int nx, int ny)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  clear(m);
+  auto vpm = get(CGAL::vertex_point, m);
+  std::vector<vertex_descriptor> vs;
+  for(int j = 0; j <= ny; ++j)
+    for(int i = 0; i <= nx; ++i)
+    {
+      vertex_descriptor v = add_vertex(m);
+      put(vpm, v, Point(i, j, 0));
+      vs.push_back(v);
+    }
+  for(int j = 0; j < ny; ++j)
+    for(int i = 0; i < nx; ++i)
+    {
+      const int a = j * (nx + 1) + i;
+      std::vector<vertex_descriptor> q = { vs[a], vs[a + 1], vs[a + nx + 2], vs[a + nx + 1] };
+      CGAL::Euler::add_face(q, m);
+    }
+}
+
+/// an nx x ny quad grid on a torus (closed, genus 1, all vertices of valence 4).
+template <typename Mesh>
+void make_quad_torus(Mesh& m, int nx, int ny, double R = 3., double r = 1.)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  clear(m);
+  auto vpm = get(CGAL::vertex_point, m);
+  std::vector<vertex_descriptor> vs;
+  for(int j = 0; j < ny; ++j)
+    for(int i = 0; i < nx; ++i)
+    {
+      const double u = 2 * CGAL_PI * i / nx, w = 2 * CGAL_PI * j / ny;
+      vertex_descriptor v = add_vertex(m);
+      put(vpm, v, Point((R + r * std::cos(w)) * std::cos(u), (R + r * std::cos(w)) * std::sin(u), r * std::sin(w)));
+      vs.push_back(v);
+    }
+  for(int j = 0; j < ny; ++j)
+    for(int i = 0; i < nx; ++i)
+    {
+      auto id = [&](int x, int y) { return vs[((y + ny) % ny) * nx + (x + nx) % nx]; };
+      std::vector<vertex_descriptor> q = { id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1) };
+      CGAL::Euler::add_face(q, m);
+    }
+}
+
+template <typename Mesh>
+long euler_characteristic(const Mesh& m)
+{
+  return long(vertices(m).size()) - long(edges(m).size()) + long(faces(m).size());
+}
+
+template <typename Mesh>
+int valence(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& m)
+{
+  int n = 0;
+  for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) { (void)h; ++n; }
+  return n;
+}
+
+template <typename Mesh>
+bool on_border(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& m)
+{
+  for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+    if(is_border(h, m)) return true;
+  return false;
+}
+
+/// valence histograms, interior and border, as a single map (border valences are stored as -valence).
+template <typename Mesh>
+std::map<int, int> valence_histogram(const Mesh& m)
+{
+  std::map<int, int> hist;
+  for(auto v : vertices(m))
+    ++hist[on_border(v, m) ? -valence(v, m) : valence(v, m)];
+  return hist;
+}
+
+template <typename Mesh>
+bool all_faces_have_degree(const Mesh& m, std::size_t d)
+{
+  for(auto f : faces(m))
+    if(CGAL::halfedges_around_face(halfedge(f, m), m).size() != d) return false;
+  return true;
+}
+
+/// A canonical code of the oriented combinatorial map seen from halfedge `start`: a breadth-first
+/// numbering over next/opposite, and for each numbered halfedge the numbers of its next and opposite.
+/// Two meshes are isomorphic (orientation-preserving, face/edge/vertex incidences) iff the code from some
+/// start of one equals the code from a fixed start of the other.
+template <typename Mesh>
+std::vector<long> canonical_code(const Mesh& m, typename boost::graph_traits<Mesh>::halfedge_descriptor start)
+{
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  std::unordered_map<halfedge_descriptor, long, boost::hash<halfedge_descriptor> > id;
+  std::vector<halfedge_descriptor> order;
+  id.reserve(halfedges(m).size() * 2);
+  id[start] = 0; order.push_back(start);
+  std::vector<long> code;
+  code.reserve(order.size() * 3);
+  for(std::size_t i = 0; i < order.size(); ++i)
+  {
+    const halfedge_descriptor h = order[i];
+    for(halfedge_descriptor n : { next(h, m), opposite(h, m) })
+    {
+      auto it = id.find(n);
+      if(it == id.end())
+      {
+        it = id.emplace(n, long(order.size())).first;
+        order.push_back(n);
+      }
+      code.push_back(it->second);
+    }
+    code.push_back(is_border(h, m) ? 1 : 0);
+  }
+  return code;
+}
+
+/// a cheap local signature of a halfedge: valences of its source and target, border flag, face degree.
+template <typename Mesh>
+long halfedge_signature(typename boost::graph_traits<Mesh>::halfedge_descriptor h, const Mesh& m)
+{
+  const long fdeg = is_border(h, m) ? 0 : long(CGAL::halfedges_around_face(h, m).size());
+  return ((valence(source(h, m), m) * 64 + valence(target(h, m), m)) * 64 + fdeg) * 2 + (is_border(h, m) ? 1 : 0);
+}
+
+/// checks that `a` and `b` are isomorphic as oriented polygon meshes (connectivity only).
+template <typename MeshA, typename MeshB>
+bool are_isomorphic(const MeshA& a, const MeshB& b)
+{
+  if(vertices(a).size() != vertices(b).size() || edges(a).size() != edges(b).size() ||
+     faces(a).size() != faces(b).size())
+    return false;
+  if(valence_histogram(a) != valence_histogram(b)) return false;
+  if(halfedges(a).size() == 0) return true;
+  // choose the rarest signature to limit the candidate starts in b
+  std::map<long, int> count_a;
+  for(auto h : halfedges(a)) ++count_a[halfedge_signature(h, a)];
+  long best = count_a.begin()->first;
+  for(const auto& kv : count_a) if(kv.second < count_a[best]) best = kv.first;
+  typename boost::graph_traits<MeshA>::halfedge_descriptor ha = *halfedges(a).begin();
+  for(auto h : halfedges(a)) if(halfedge_signature(h, a) == best) { ha = h; break; }
+  const std::vector<long> code_a = canonical_code(a, ha);
+  for(auto hb : halfedges(b))
+    if(halfedge_signature(hb, b) == best && canonical_code(b, hb) == code_a)
+      return true;
+  return false;
+}
+
+template <typename Mesh>
+void copy_mesh(const Mesh& src, Mesh& dst)
+{
+  clear(dst);
+  CGAL::copy_face_graph(src, dst);
+}
+
+} // namespace qzip_test
+
+#endif // QZIP_TEST_UTILS_H
