@@ -16,12 +16,14 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 
 #include <boost/graph/graph_traits.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 #include <vector>
@@ -45,12 +47,14 @@ inline bool same_file(const std::string& a, const std::string& b)
 
 /// Reads `path` into `mesh` (cleared first) and checks it. Returns `false` with a one-line message in `error`
 /// if the file is missing or unreadable, is not a valid polygon mesh (`CGAL::IO::read_polygon_mesh` fails,
-/// e.g. on non-manifold input, or `CGAL::is_valid_polygon_mesh` fails), has no face, has a non-finite
-/// coordinate, or has a face whose degree `accepted` does not allow.
+/// e.g. on an edge shared by three faces, or `CGAL::is_valid_polygon_mesh` fails), has a pinched
+/// (non-manifold) vertex, has no face, has a non-finite coordinate, or has a face whose degree `accepted`
+/// does not allow.
 template <typename Mesh>
 bool read_input_mesh(const std::string& path, Mesh& mesh, std::string& error,
                      Accepted_faces accepted = Accepted_faces::QUADS_ONLY)
 {
+  error.clear();
   CGAL::clear(mesh);
   struct stat st;
   if(::stat(path.c_str(), &st) != 0)
@@ -79,6 +83,15 @@ bool read_input_mesh(const std::string& path, Mesh& mesh, std::string& error,
   {
     CGAL::clear(mesh);
     error = "'" + path + "' is not a valid polygon mesh";
+    return false;
+  }
+  std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor> pinched;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(mesh, std::back_inserter(pinched));
+  if(!pinched.empty())
+  {
+    CGAL::clear(mesh);
+    error = "'" + path + "' is not manifold: it has " + std::to_string(pinched.size())
+            + " pinched (non-manifold) vertex fan(s)";
     return false;
   }
   if(faces(mesh).empty())
@@ -128,6 +141,7 @@ template <typename Mesh>
 bool write_output_mesh_atomically(const std::string& path, const Mesh& mesh, std::string& error,
                                   const std::string& input_path = std::string())
 {
+  error.clear();
   if(!input_path.empty() && same_file(path, input_path))
   {
     error = "output '" + path + "' is the input file; refusing to overwrite it";
@@ -144,10 +158,15 @@ bool write_output_mesh_atomically(const std::string& path, const Mesh& mesh, std
   }
   // keep the extension: CGAL::IO::write_polygon_mesh chooses the format from it
   const std::string tmp = dir + "." + name.substr(0, dot) + ".tmp" + std::to_string(::getpid()) + name.substr(dot);
+  if(!std::ofstream(tmp).good()) // checked here so that CGAL's writer does not print its own message
+  {
+    error = "cannot create a file in the directory of '" + path + "'";
+    return false;
+  }
   if(!CGAL::IO::write_polygon_mesh(tmp, mesh, CGAL::parameters::stream_precision(17)))
   {
     std::remove(tmp.c_str());
-    error = "cannot write '" + path + "' (unsupported extension or unwritable directory)";
+    error = "cannot write '" + path + "' (unsupported file extension?)";
     return false;
   }
   if(std::rename(tmp.c_str(), path.c_str()) != 0)

@@ -21,6 +21,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdlib>
 #include <iomanip>
@@ -113,9 +114,9 @@ computes the statistics of `pm` in a few linear passes.
           `geom_traits`); the constrained edges only change the defects, not the valence histograms
           nor `singularity_lower_bound`.
 */
-template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+template <typename PolygonMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Mesh_report compute_mesh_report(const PolygonMesh& pm,
-                                const NamedParameters& np = parameters::default_values())
+                                const NamedParameters& np = CGAL::parameters::default_values())
 {
   typedef boost::graph_traits<PolygonMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;

@@ -154,8 +154,8 @@ Preprocess_result preprocess_valences(PolygonMesh& pm, const NamedParameters& np
   using parameters::choose_parameter;
   using parameters::get_parameter;
 
-  auto vpm = choose_parameter(get_parameter(np, internal_np::vertex_point), get_property_map(vertex_point, pm));
-  auto ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(vertex_point, pm));
+  auto ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
                               Static_boolean_property_map<edge_descriptor, false>());
   typedef decltype(vpm) VPM;
 

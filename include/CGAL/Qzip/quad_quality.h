@@ -61,19 +61,19 @@ Newell normal) gives 0.
 
 \pre `f` is a quad: `CGAL::is_quad(halfedge(f, pm), pm)`
 */
-template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+template <typename PolygonMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 double quad_scaled_jacobian(typename boost::graph_traits<PolygonMesh>::face_descriptor f,
                             const PolygonMesh& pm,
-                            const NamedParameters& np = parameters::default_values())
+                            const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   typedef typename GetGeomTraits<PolygonMesh, NamedParameters>::type Geom_traits;
   typedef typename GetVertexPointMap<PolygonMesh, NamedParameters>::const_type Vertex_point_map;
   typedef typename Geom_traits::Vector_3 Vector_3;
 
-  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, internal_np::geom_traits));
-  const Vertex_point_map vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const Vertex_point_map vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_const_property_map(vertex_point, pm));
   auto vector = gt.construct_vector_3_object();
   auto cross = gt.construct_cross_product_vector_3_object();

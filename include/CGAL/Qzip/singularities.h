@@ -30,19 +30,19 @@ namespace internal {
 template <typename PolygonMesh, typename NamedParameters, typename Function>
 auto with_defect_parameters(const PolygonMesh& pm, const NamedParameters& np, Function f)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   typedef typename boost::graph_traits<PolygonMesh>::edge_descriptor edge_descriptor;
   typedef typename GetGeomTraits<PolygonMesh, NamedParameters>::type Geom_traits;
   typedef typename GetVertexPointMap<PolygonMesh, NamedParameters>::const_type Vertex_point_map;
   typedef Static_boolean_property_map<edge_descriptor, false> Default_ECM;
-  typedef typename internal_np::Lookup_named_param_def<internal_np::edge_is_constrained_t, NamedParameters,
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::edge_is_constrained_t, NamedParameters,
                                                        Default_ECM>::type Edge_is_constrained_map;
 
-  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, internal_np::geom_traits));
-  const Vertex_point_map vpm = choose_parameter(get_parameter(np, internal_np::vertex_point),
+  const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+  const Vertex_point_map vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_const_property_map(vertex_point, pm));
-  const Edge_is_constrained_map ecm = choose_parameter(get_parameter(np, internal_np::edge_is_constrained),
+  const Edge_is_constrained_map ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
                                                        Default_ECM());
   return f(vpm, ecm, gt);
 }
@@ -102,10 +102,11 @@ faces at a 270 degree concave corner, and a vertex inside a constrained (feature
 side of the curve looks like half a regular vertex. An interior vertex incident to exactly one constrained
 edge (the end of a feature curve) has one sector of about 2 pi and the defect is again `valence - 4`.
 
-The paper writes the ideal *valence* of a boundary vertex as `max(2, floor(theta/(pi/2) + 1/2))`;
-read literally as a valence it is off by one on a straight border, where a regular vertex has valence 3
-(and 2 quads), so it is used here as a number of faces, which is what it counts for the paper's corner
-cases; the `max(2, .)` becomes `max(1, .)` for the same reason (a sector has at least one face).
+The paper (Sec. 4.1) writes the ideal *valence* of a boundary vertex as `max(2, floor(theta/(pi/2) + 1/2))`.
+Read literally as a valence it is off by one on a straight border (it gives 2, but a regular vertex there
+has valence 3 and 2 quads) and at a 270 degree corner (3 instead of 4); it only matches at a convex 90
+degree corner, through the clamp. Read as a number of quads it is right at every angle once the clamp is
+`max(1, .)`, and this is the reading used here.
 
 Triangles and other polygons are faces like quads: a vertex of a hybrid mesh is measured with the same rule.
 A negative defect means that `v` behaves as a valence-3 vertex (`Singularity_type::VALENCE_3_LIKE`),
@@ -144,10 +145,10 @@ a positive one as a valence-5 vertex. An isolated vertex has defect 0.
 \returns the defect of `v`
 \sa `singularity_type()`, `compute_vertex_defects()`
 */
-template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+template <typename PolygonMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 int vertex_defect(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
                   const PolygonMesh& pm,
-                  const NamedParameters& np = parameters::default_values())
+                  const NamedParameters& np = CGAL::parameters::default_values())
 {
   return internal::with_defect_parameters(pm, np, [&](const auto& vpm, const auto& ecm, const auto& gt)
   {
@@ -164,10 +165,10 @@ returns the singularity type of `v` given by the sign of `vertex_defect(v, pm, n
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
 \param np the same named parameters as `vertex_defect()`
 */
-template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+template <typename PolygonMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Singularity_type singularity_type(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
                                   const PolygonMesh& pm,
-                                  const NamedParameters& np = parameters::default_values())
+                                  const NamedParameters& np = CGAL::parameters::default_values())
 {
   const int d = vertex_defect(v, pm, np);
   return d < 0 ? Singularity_type::VALENCE_3_LIKE
@@ -187,9 +188,9 @@ computes `vertex_defect(v, pm, np)` for every vertex `v` of `pm` in one pass and
 \returns the number of vertices with a non-zero defect
 */
 template <typename PolygonMesh, typename VertexDefectMap,
-          typename NamedParameters = parameters::Default_named_parameters>
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::size_t compute_vertex_defects(const PolygonMesh& pm, VertexDefectMap defect_map,
-                                   const NamedParameters& np = parameters::default_values())
+                                   const NamedParameters& np = CGAL::parameters::default_values())
 {
   return internal::with_defect_parameters(pm, np, [&](const auto& vpm, const auto& ecm, const auto& gt)
   {

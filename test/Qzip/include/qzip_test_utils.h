@@ -228,6 +228,18 @@ void copy_mesh(const Mesh& src, Mesh& dst)
   CGAL::copy_face_graph(src, dst);
 }
 
+/// copies `src` into `dst` and returns the map from the vertices of `src` to those of `dst`.
+template <typename Mesh>
+std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, typename boost::graph_traits<Mesh>::vertex_descriptor>
+copy_mesh_with_map(const Mesh& src, Mesh& dst)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::map<vertex_descriptor, vertex_descriptor> v2v;
+  clear(dst);
+  CGAL::copy_face_graph(src, dst, CGAL::parameters::vertex_to_vertex_map(boost::make_assoc_property_map(v2v)));
+  return v2v;
+}
+
 } // namespace qzip_test
 
 #endif // QZIP_TEST_UTILS_H

@@ -50,6 +50,9 @@ double corner_angle(typename boost::graph_traits<PolygonMesh>::halfedge_descript
 }
 
 // Number of quads that ideally fill a sector of angle `theta`: the closest multiple of pi/2, at least one.
+// This is the paper's ideal boundary "valence" max(2, floor(theta/(pi/2) + 1/2)) (Sec. 4.1) read as a count of
+// quads, with the clamp lowered to 1: read as a valence it would be off by one on a straight border, where a
+// regular vertex has valence 3 and 2 quads (and at a 270 degree corner, valence 4 and 3 quads).
 inline int ideal_number_of_faces(double theta)
 {
   const double half_pi = 1.5707963267948966;
@@ -82,7 +85,7 @@ vertex_defect_info(typename boost::graph_traits<PolygonMesh>::vertex_descriptor 
   for(halfedge_descriptor h : halfedges_around_target(hv, pm))
   {
     ++info.valence;
-    if(is_border(h, pm) || is_border(opposite(h, pm), pm))
+    if(is_border(h, pm)) // a border cycle through v enters it with a border halfedge
       info.on_border = true;
     if(start == GT::null_halfedge() && is_cut(h))
       start = h;

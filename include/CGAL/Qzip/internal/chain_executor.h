@@ -1,0 +1,324 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_INTERNAL_CHAIN_EXECUTOR_H
+#define CGAL_QZIP_INTERNAL_CHAIN_EXECUTOR_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/Qzip/surgery_plan.h>
+#include <CGAL/Qzip/Qzip_visitor_base.h>
+#include <CGAL/Qzip/internal/operation_log.h>
+#include <CGAL/Qzip/internal/rotation.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/property_map.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace CGAL {
+namespace Qzip {
+
+template <typename PolygonMesh> struct Qzip_result;
+
+namespace internal {
+
+// Executes a surgery plan through an operation log (paper, Sec. 2.7), checks every operation before
+// applying it and the valences after the chain, and rolls everything back on failure.
+//
+// The state carried along the path is the guide g = v->y: y is the transient v3 created by the
+// previous operation (the paper's "edge right before"). With o = v->w the next path edge:
+//   RC: collapse face(o) = (v, w, x, z), merging z into w; new guide w->x.
+//   LC: collapse face(w->v) = (w, v, z, x), merging z into w; new guide w->x.
+//   LS: split v between o and g (the new vertex takes the edges strictly counterclockwise from o to g,
+//       the new quad is (v, w, c, y)); new guide w->c.
+//   RS: the same split; new guide w->v.
+//   NOOP: new guide w->v.
+template <typename PolygonMesh, typename VertexPointMap, typename NamedParameters>
+class Chain_executor
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef boost::hash<vertex_descriptor> Vertex_hash;
+  typedef boost::hash<face_descriptor> Face_hash;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::edge_is_constrained_t, NamedParameters,
+            Static_boolean_property_map<edge_descriptor, false> >::type ECM;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<Qzip::internal_np::face_is_constrained_t, NamedParameters,
+            Static_boolean_property_map<face_descriptor, false> >::type FCM;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::visitor_t, NamedParameters,
+            Default_qzip_visitor<PolygonMesh> >::reference Visitor;
+
+  struct Before { int valence; bool border; };
+
+  PolygonMesh& pm;
+  Operation_log<PolygonMesh, VertexPointMap>& log;
+  ECM ecm;
+  FCM fcm;
+  Default_qzip_visitor<PolygonMesh> default_visitor;
+  Visitor visitor;
+
+  std::unordered_map<vertex_descriptor, Before, Vertex_hash> before;
+  std::unordered_set<vertex_descriptor, Vertex_hash> alive, created;
+  std::unordered_set<face_descriptor, Face_hash> new_faces;
+  std::size_t collapses = 0, splits = 0, cleanups = 0;
+
+public:
+  Chain_executor(PolygonMesh& pm, Operation_log<PolygonMesh, VertexPointMap>& log, const NamedParameters& np)
+    : pm(pm), log(log),
+      ecm(parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::edge_is_constrained),
+                                       Static_boolean_property_map<edge_descriptor, false>())),
+      fcm(parameters::choose_parameter(parameters::get_parameter(np, Qzip::internal_np::face_is_constrained),
+                                       Static_boolean_property_map<face_descriptor, false>())),
+      visitor(parameters::choose_parameter(parameters::get_parameter_reference(np, CGAL::internal_np::visitor),
+                                           default_visitor))
+  {}
+
+  Qzip_result<PolygonMesh> run(const Surgery_plan<PolygonMesh>& plan)
+  {
+    Qzip_result<PolygonMesh> r;
+    r.status = plan.status;
+    if(!plan.is_realizable()) return r;
+    const Point source_at = get(log_vpm(), plan.source), target_at = get(log_vpm(), plan.target);
+    visitor.on_qzip_started(plan);
+    const bool chain_ok = run_chain(plan);
+    const bool clean_ok = chain_ok && clean_up();
+    const bool valences_ok = clean_ok && valences_preserved();
+#ifdef CGAL_QZIP_VERBOSE
+    for(const auto& kv : before)
+      if(alive.count(kv.first) && int(valence(kv.first, pm)) != kv.second.valence)
+        std::cerr << "   " << kv.first << ": " << kv.second.valence << " -> " << valence(kv.first, pm) << "\n";
+    for(vertex_descriptor v : created) if(alive.count(v)) std::cerr << "   new " << v << ": " << valence(v, pm) << "\n";
+    std::cerr << "qzip: chain " << chain_ok << " cleanup " << clean_ok << " valences " << valences_ok << "\n";
+#endif
+    if(!valences_ok)
+    {
+      log.rollback();
+      r.status = Plan_status::EXECUTION_FAILED;
+      visitor.on_qzip_finished(plan, false);
+      return r;
+    }
+    r.status = Plan_status::REALIZABLE;
+    r.number_of_collapses = collapses;
+    r.number_of_splits = splits;
+    r.number_of_cleanups = cleanups;
+    r.touched_vertices.assign(alive.begin(), alive.end());
+    for(face_descriptor f : new_faces) r.scar_faces.push_back(f);
+    locate_moved_pair(plan, source_at, target_at, r);
+    visitor.on_qzip_finished(plan, true);
+    return r;
+  }
+
+private:
+  VertexPointMap log_vpm() const { return log.vertex_point_map(); }
+
+  void touch(vertex_descriptor v)
+  {
+    if(before.count(v) == 0 && created.count(v) == 0)
+    {
+      before[v] = Before{ int(valence(v, pm)), is_border_vertex(v, pm) };
+      alive.insert(v);
+    }
+  }
+
+  bool constrained_around(vertex_descriptor v) const
+  {
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      if(get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm)))) return true;
+    return false;
+  }
+
+  // collapses face(h), keeping target(h); checks everything first.
+  bool collapse(halfedge_descriptor h)
+  {
+    if(is_border(h, pm) || !can_collapse_quad(h, pm)) return false;
+    const vertex_descriptor a = target(h, pm), b = target(next(h, pm), pm);
+    const vertex_descriptor c = target(next(next(h, pm), pm), pm), d = source(h, pm);
+    if(is_border_vertex(c, pm) || constrained_around(a) || constrained_around(c)) return false;
+    touch(a); touch(b); touch(c); touch(d);
+    visitor.on_collapse(h, pm);
+    new_faces.erase(face(h, pm));
+    alive.erase(c);
+    created.erase(c);
+    last_delimiters = log.collapse(h);
+    ++collapses;
+    return true;
+  }
+
+  // splits target(h1) between h1 and h2 (see split_vertex_into_quad()); checks everything first.
+  bool split(halfedge_descriptor h1, halfedge_descriptor h2)
+  {
+    if(!can_split_vertex_into_quad(h1, h2, pm)) return false;
+    const vertex_descriptor v = target(h1, pm);
+    if(constrained_around(v)) return false;
+    touch(v); touch(source(h1, pm)); touch(source(h2, pm));
+    visitor.on_split(h1, h2, pm);
+    last_quad = log.split(h1, h2);
+    const vertex_descriptor c = target(next(next(last_quad, pm), pm), pm);
+    alive.insert(c);
+    created.insert(c);
+    new_faces.insert(face(last_quad, pm));
+    ++splits;
+    return true;
+  }
+
+  bool run_chain(const Surgery_plan<PolygonMesh>& plan)
+  {
+    halfedge_descriptor guide = GT::null_halfedge();
+    for(std::size_t j = 0; j + 1 < plan.path.size(); ++j)
+    {
+#ifdef CGAL_QZIP_VERBOSE
+      std::cerr << "  step " << j << " at " << plan.path[j] << " (valence " << valence(plan.path[j], pm) << ") "
+                << short_name(plan.operations[j]) << " -> " << plan.path[j + 1];
+      if(guide != GT::null_halfedge() && halfedge(plan.path[j], plan.path[j + 1], pm).second)
+        std::cerr << " guide k=" << ccw_steps(halfedge(plan.path[j], plan.path[j + 1], pm).first, guide, pm)
+                  << " y valence " << valence(target(guide, pm), pm);
+      std::cerr << "\n";
+#endif
+      const auto vw = halfedge(plan.path[j], plan.path[j + 1], pm);
+      if(!vw.second) return false;
+      const halfedge_descriptor o = vw.first;
+      switch(plan.operations[j])
+      {
+        case Strip_operation::NO_OPERATION:
+          guide = opposite(o, pm);
+          break;
+        case Strip_operation::RIGHT_COLLAPSE:
+          if(!collapse(o)) return false;
+          guide = opposite(last_delimiters.first, pm);
+          break;
+        case Strip_operation::LEFT_COLLAPSE:
+          if(is_border(opposite(o, pm), pm) || !collapse(prev(opposite(o, pm), pm))) return false;
+          guide = opposite(last_delimiters.second, pm);
+          break;
+        case Strip_operation::LEFT_SPLIT:
+        case Strip_operation::RIGHT_SPLIT:
+          if(guide == GT::null_halfedge() || guide == o || source(guide, pm) != plan.path[j]) return false;
+          if(!split(opposite(o, pm), opposite(guide, pm))) return false;
+          guide = plan.operations[j] == Strip_operation::LEFT_SPLIT ? next(next(last_quad, pm), pm)
+                                                                    : opposite(o, pm);
+          break;
+      }
+    }
+    return true;
+  }
+
+  // Sec. 2.7: a valence-2 vertex (two v3 merged) is removed, which leaves two v3; a valence-6 vertex
+  // (two v5 merged) is split into two regular vertices, which leaves two v5.
+  bool clean_up()
+  {
+    std::vector<vertex_descriptor> candidates(alive.begin(), alive.end());
+    for(vertex_descriptor v : candidates)
+    {
+      if(alive.count(v) == 0 || is_border_vertex(v, pm)) continue;
+      const std::size_t d = valence(v, pm);
+      if(d == 2 && !remove_valence_2(v)) return false;
+      if(d == 6 && !split_valence_6(v)) return false;
+    }
+    return true;
+  }
+
+  bool remove_valence_2(vertex_descriptor v)
+  {
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      if(collapse(next(next(h, pm), pm))) { ++cleanups; return true; }
+    return false;
+  }
+
+  bool split_valence_6(vertex_descriptor v)
+  {
+    std::vector<halfedge_descriptor> in;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm)) in.push_back(h);
+    // halfedges_around_target turns clockwise: the fan strictly counterclockwise between in[i] and
+    // in[i-3] has two edges, so both copies get valence 4 and the two delimiters one more edge.
+    for(std::size_t i = 0; i < in.size(); ++i)
+    {
+      const halfedge_descriptor h1 = in[i], h2 = in[(i + in.size() - 3) % in.size()];
+      const vertex_descriptor b = source(h1, pm), d = source(h2, pm);
+      if(valence(b, pm) != 4 || valence(d, pm) != 4 || is_border_vertex(b, pm) || is_border_vertex(d, pm))
+        continue;
+      if(split(h1, h2)) { ++cleanups; return true; }
+    }
+    return false;
+  }
+
+  // no singularity was created: the irregular valences of the touched vertices after the surgery form
+  // a sub-multiset of those before (a Q-zip whose path passes other singularities may cancel some of
+  // them in complementary pairs, never add one), and no border vertex changed valence.
+  bool valences_preserved() const
+  {
+    std::vector<int> was, is;
+    for(const auto& kv : before)
+    {
+      if(kv.second.border)
+      {
+        if(alive.count(kv.first) == 0 || created.count(kv.first) != 0) return false;
+        if(int(valence(kv.first, pm)) != kv.second.valence) return false;
+      }
+      else if(kv.second.valence != 4) was.push_back(kv.second.valence);
+    }
+    for(vertex_descriptor v : alive)
+    {
+      const bool pre = before.count(v) != 0 && created.count(v) == 0;
+      if(pre && before.at(v).border) continue;
+      if(is_border_vertex(v, pm)) return false; // an interior vertex reached the border
+      const int d = int(valence(v, pm));
+      if(d != 4) is.push_back(d);
+    }
+    std::sort(was.begin(), was.end());
+    std::sort(is.begin(), is.end());
+    return std::includes(was.begin(), was.end(), is.begin(), is.end());
+  }
+
+  // the singular vertices of the scar that are new or changed, assigned to the source and the target
+  // by type, or by distance to their old positions for pairs of the same type.
+  void locate_moved_pair(const Surgery_plan<PolygonMesh>& plan, const Point& source_at, const Point& target_at,
+                         Qzip_result<PolygonMesh>& r) const
+  {
+    std::vector<vertex_descriptor> moved;
+    for(vertex_descriptor v : alive)
+    {
+      const int d = int(valence(v, pm));
+      if(d == 4 || is_border_vertex(v, pm)) continue;
+      const bool pre = before.count(v) != 0 && created.count(v) == 0;
+      if(!pre || before.at(v).valence != d) moved.push_back(v);
+    }
+    if(moved.size() != 2) return;
+    const int ds = plan.source_valence, dt = plan.target_valence;
+    const int d0 = int(valence(moved[0], pm)), d1 = int(valence(moved[1], pm));
+    bool swap = false;
+    if(ds != dt) swap = (d0 != ds);
+    else
+    {
+      auto dist = [this](vertex_descriptor v, const Point& p) { return CGAL::squared_distance(get(log_vpm(), v), p); };
+      swap = dist(moved[0], source_at) + dist(moved[1], target_at) > dist(moved[1], source_at) + dist(moved[0], target_at);
+    }
+    if(swap) std::swap(moved[0], moved[1]);
+    if(int(valence(moved[0], pm)) != ds || int(valence(moved[1], pm)) != dt) return;
+    r.moved_source = moved[0];
+    r.moved_target = moved[1];
+  }
+
+  Split_delimiters<PolygonMesh> last_delimiters;
+  halfedge_descriptor last_quad;
+};
+
+} // namespace internal
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_INTERNAL_CHAIN_EXECUTOR_H

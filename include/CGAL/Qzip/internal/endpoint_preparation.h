@@ -1,0 +1,161 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_INTERNAL_ENDPOINT_PREPARATION_H
+#define CGAL_QZIP_INTERNAL_ENDPOINT_PREPARATION_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/Qzip/strip_operation.h>
+#include <CGAL/Qzip/quad_operations.h>
+#include <CGAL/Qzip/internal/rotation.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <vector>
+
+namespace CGAL {
+namespace Qzip {
+namespace internal {
+
+// The end-point adjustments of the paper's Sec. 2.6, at halfedge level (see the user manual for the
+// diagrams). `path` is the sketch and `ops[j]` the transported compass tag at `path[j]`; both are
+// rewritten in place. Adjustment vertices must be interior vertices. Returns REALIZABLE or
+// the reason for refusing.
+template <typename PolygonMesh>
+class Endpoint_preparation
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef std::vector<vertex_descriptor> Path;
+  typedef std::vector<Strip_operation> Operations;
+
+  const PolygonMesh& pm;
+
+  // adjustment vertices may be singular (the surgery may then cancel that singularity, which the
+  // executor accepts) but must be interior
+  bool is_usable(vertex_descriptor v) const { return !is_border_vertex(v, pm); }
+
+  halfedge_descriptor out(vertex_descriptor a, vertex_descriptor b) const { return halfedge(a, b, pm).first; }
+
+public:
+  explicit Endpoint_preparation(const PolygonMesh& pm) : pm(pm) {}
+
+  // E1-E3: v3 end: nothing; v5 end with a split: one more edge to the farthest neighbour on the
+  // other side (ccw index 2 or 3 from the incoming edge), t becomes a split vertex; v5 end with a
+  // collapse: the last edge u->t is replaced by u->n->x around the quad on that side.
+  // `start_compass` is the compass at the start, used when a one-edge path starts with a no-operation.
+  template <typename TransportTurn>
+  Plan_status prepare_end(Path& path, Operations& ops, Strip_operation start_compass,
+                          const TransportTurn& transport) const
+  {
+    const std::size_t n = path.size();
+    const vertex_descriptor t = path[n - 1], u = path[n - 2];
+    const Strip_operation last = (n == 2 && ops[0] == Strip_operation::NO_OPERATION) ? start_compass : ops[n - 2];
+    if(valence(t, pm) == 3) return Plan_status::REALIZABLE;
+    const halfedge_descriptor ut = out(u, t);
+    switch(last)
+    {
+      case Strip_operation::LEFT_SPLIT:
+      case Strip_operation::RIGHT_SPLIT:
+      {
+        const vertex_descriptor e =
+          target(rotate_outgoing(out(t, u), last == Strip_operation::LEFT_SPLIT ? 2 : 3, pm), pm);
+        if(!is_usable(e)) return Plan_status::ENDPOINT_ADJUSTMENT;
+        path.push_back(e);
+        ops.push_back(Strip_operation::NO_OPERATION); // the new end: no operation
+        ops[n - 1] = transport(u, t, e, last);
+        return Plan_status::REALIZABLE;
+      }
+      case Strip_operation::LEFT_COLLAPSE:
+      case Strip_operation::RIGHT_COLLAPSE:
+      {
+        const bool left = last == Strip_operation::LEFT_COLLAPSE;
+        if(left ? is_border(ut, pm) : is_border(opposite(ut, pm), pm)) return Plan_status::BORDER_OR_CONSTRAINED;
+        // LC: face(u->t) = (u, t, x, n); RC: face(t->u) = (t, u, n, x)
+        const halfedge_descriptor h = left ? next(ut, pm) : next(opposite(ut, pm), pm);
+        const vertex_descriptor x = left ? target(h, pm) : target(next(h, pm), pm);
+        const vertex_descriptor nb = left ? target(next(h, pm), pm) : target(h, pm);
+        if(!is_usable(x) || !is_usable(nb)) return Plan_status::ENDPOINT_ADJUSTMENT;
+        path.back() = nb;
+        path.push_back(x);
+        ops[n - 2] = left ? Strip_operation::RIGHT_SPLIT : Strip_operation::LEFT_SPLIT;
+        ops.push_back(Strip_operation::NO_OPERATION);
+        ops[n - 1] = last;
+        return Plan_status::REALIZABLE;
+      }
+      default:
+        return Plan_status::INVALID_PATH;
+    }
+  }
+
+  // S1-S4: v3 start with a split: no operation at s; v3 start with a collapse: start from the
+  // neighbour n on that side and turn along the quad (n, d) towards v1; v5 start with a split: start
+  // from the back neighbour n on that side (ccw index 2 or 3 from v1) with no operation; v5 start
+  // with a collapse: nothing.
+  // `retransport_from` is set to the first index whose tag must be transported again (0: none).
+  Plan_status prepare_start(Path& path, Operations& ops, std::size_t& retransport_from) const
+  {
+    retransport_from = 0;
+    const vertex_descriptor s = path[0], v1 = path[1];
+    const Strip_operation first = ops[0];
+    const halfedge_descriptor sv = out(s, v1);
+    if(valence(s, pm) == 3)
+    {
+      if(is_split(first)) { ops[0] = Strip_operation::NO_OPERATION; return Plan_status::REALIZABLE; }
+      const bool left = first == Strip_operation::LEFT_COLLAPSE;
+      if(left ? is_border(sv, pm) : is_border(opposite(sv, pm), pm)) return Plan_status::BORDER_OR_CONSTRAINED;
+      // LC: face(s->v1) = (s, v1, d, n); RC: face(v1->s) = (v1, s, n, d)
+      const halfedge_descriptor h = left ? next(sv, pm) : next(opposite(sv, pm), pm);
+      const vertex_descriptor d = left ? target(h, pm) : target(next(h, pm), pm);
+      const vertex_descriptor nb = left ? target(next(h, pm), pm) : target(h, pm);
+      if(!is_usable(d) || !is_usable(nb)) return Plan_status::ENDPOINT_ADJUSTMENT;
+      path[0] = d;
+      path.insert(path.begin(), nb);
+      ops.insert(ops.begin(), first);
+      ops[1] = left ? Strip_operation::RIGHT_COLLAPSE : Strip_operation::LEFT_COLLAPSE;
+      retransport_from = 2;
+      return Plan_status::REALIZABLE;
+    }
+    if(is_split(first))
+    {
+      const vertex_descriptor nb =
+        target(rotate_outgoing(sv, first == Strip_operation::LEFT_SPLIT ? 2 : 3, pm), pm);
+      if(!is_usable(nb)) return Plan_status::ENDPOINT_ADJUSTMENT;
+      path.insert(path.begin(), nb);
+      ops.insert(ops.begin(), Strip_operation::NO_OPERATION);
+    }
+    return Plan_status::REALIZABLE;
+  }
+
+  // removes folds a -> b -> a; the compass at a keeps its orientation, so its tag rotates by the
+  // number of counterclockwise steps from a->b to the new next edge. a must be regular.
+  Plan_status remove_folds(Path& path, Operations& ops) const
+  {
+    for(std::size_t j = 0; j + 2 < path.size();)
+    {
+      if(path[j] != path[j + 2]) { ++j; continue; }
+      const vertex_descriptor a = path[j], b = path[j + 1];
+      if(valence(a, pm) != 4 || ops[j] == Strip_operation::NO_OPERATION) return Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT;
+      path.erase(path.begin() + long(j) + 1, path.begin() + long(j) + 3);
+      ops.erase(ops.begin() + long(j) + 1, ops.begin() + long(j) + 3);
+      if(j + 1 < path.size())
+        ops[j] = rotate(ops[j], ccw_steps(out(a, b), out(a, path[j + 1]), pm));
+      else
+        ops[j] = Strip_operation::NO_OPERATION;
+      if(j > 0) --j;
+    }
+    return Plan_status::REALIZABLE;
+  }
+};
+
+} // namespace internal
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_INTERNAL_ENDPOINT_PREPARATION_H

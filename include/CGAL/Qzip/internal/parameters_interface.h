@@ -1,0 +1,15 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+// The named parameters Qzip adds to CGAL's list. No include guard: included with different
+// definitions of CGAL_QZIP_add_named_parameter; moves verbatim into CGAL's parameters_interface.h.
+
+CGAL_QZIP_add_named_parameter(edge_weight_t, edge_weight, edge_weight_map)
+CGAL_QZIP_add_named_parameter(face_is_constrained_t, face_is_constrained, face_is_constrained_map)
+CGAL_QZIP_add_named_parameter(scoring_functor_t, scoring_functor, scoring_functor)
+CGAL_QZIP_add_named_parameter(stop_predicate_t, stop_predicate, stop_predicate)
+CGAL_QZIP_add_named_parameter(smoothing_t, smoothing, do_smooth)

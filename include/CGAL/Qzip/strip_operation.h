@@ -1,0 +1,91 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_STRIP_OPERATION_H
+#define CGAL_QZIP_STRIP_OPERATION_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/assertions.h>
+
+namespace CGAL {
+namespace Qzip {
+
+/*!
+\ingroup PkgQzipPrimitive
+The four strip operations of the compass, in counterclockwise order (a left turn of the path takes
+the next one, a right turn the previous one), and the no-operation used at adjusted path ends.
+*/
+enum class Strip_operation
+{
+  LEFT_SPLIT = 0,      ///< LS: a strip of quads is inserted on the left of the path
+  RIGHT_COLLAPSE = 1,  ///< RC: the quads on the left of the path collapse towards the right
+  LEFT_COLLAPSE = 2,   ///< LC: the quads on the right of the path collapse towards the left
+  RIGHT_SPLIT = 3,     ///< RS: a strip of quads is inserted on the right of the path
+  NO_OPERATION = 4     ///< nothing happens at this vertex (guide-only vertex of an adjusted end)
+};
+
+/// \ingroup PkgQzipPrimitive
+/// rotates a compass tag by `quarter_turns` counterclockwise (a negative value turns clockwise).
+inline Strip_operation rotate(Strip_operation op, int quarter_turns)
+{
+  CGAL_precondition(op != Strip_operation::NO_OPERATION);
+  return Strip_operation(((int(op) + quarter_turns) % 4 + 4) % 4);
+}
+
+/// \ingroup PkgQzipPrimitive
+/// `true` for `LEFT_SPLIT` and `RIGHT_SPLIT`.
+inline bool is_split(Strip_operation op)
+{ return op == Strip_operation::LEFT_SPLIT || op == Strip_operation::RIGHT_SPLIT; }
+
+/// \ingroup PkgQzipPrimitive
+/// `true` for `LEFT_COLLAPSE` and `RIGHT_COLLAPSE`.
+inline bool is_collapse(Strip_operation op)
+{ return op == Strip_operation::LEFT_COLLAPSE || op == Strip_operation::RIGHT_COLLAPSE; }
+
+/// \ingroup PkgQzipPrimitive
+/// the short name of a strip operation: "LS", "RC", "LC", "RS" or "NOOP".
+inline const char* short_name(Strip_operation op)
+{
+  static const char* names[] = { "LS", "RC", "LC", "RS", "NOOP" };
+  return names[int(op)];
+}
+
+/// \ingroup PkgQzipPrimitive
+/// Why a plan cannot be carried out.
+enum class Plan_status
+{
+  REALIZABLE,            ///< the plan can be executed
+  INVALID_PATH,          ///< the path is not a simple edge path of at least one edge
+  UNSUPPORTED_ENDPOINT,  ///< an end of the path is not an interior vertex of valence 3 or 5
+  ENDPOINT_ADJUSTMENT,   ///< an end-point adjustment needs a vertex that is singular, on the border, or constrained
+  NOT_SIMPLE_AFTER_ADJUSTMENT, ///< the adjusted path is not simple
+  BORDER_OR_CONSTRAINED, ///< an operation would touch the border, a constrained edge or a protected face
+  EXECUTION_FAILED       ///< the chain could not be completed (a quad would degenerate, a link condition fails) or left a new singularity; the mesh was restored
+};
+
+/// \ingroup PkgQzipPrimitive
+/// a human-readable description of a `Plan_status`.
+inline const char* describe(Plan_status s)
+{
+  switch(s)
+  {
+    case Plan_status::REALIZABLE: return "realizable";
+    case Plan_status::INVALID_PATH: return "invalid path";
+    case Plan_status::UNSUPPORTED_ENDPOINT: return "an end is not an interior valence-3 or valence-5 vertex";
+    case Plan_status::ENDPOINT_ADJUSTMENT: return "the end-point adjustment needs a singular, border or constrained vertex";
+    case Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT: return "the adjusted path is not simple";
+    case Plan_status::BORDER_OR_CONSTRAINED: return "an operation would touch the border, a feature or a protected face";
+    case Plan_status::EXECUTION_FAILED: return "the chain of operations could not be completed";
+  }
+  return "";
+}
+
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_STRIP_OPERATION_H

@@ -1,0 +1,240 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_SURGERY_PLAN_H
+#define CGAL_QZIP_SURGERY_PLAN_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/Qzip/quad_operations.h>
+#include <CGAL/Qzip/strip_operation.h>
+#include <CGAL/Qzip/Named_function_parameters.h>
+#include <CGAL/Qzip/internal/rotation.h>
+#include <CGAL/Qzip/internal/endpoint_preparation.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/property_map.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <array>
+#include <vector>
+
+namespace CGAL {
+namespace Qzip {
+
+/*!
+\ingroup PkgQzipPrimitive
+A Q-zip surgery plan: plain data, computed without touching the mesh by `plan_qzip()`.
+
+`path` is the adjusted surgery path (after the end-point preparation of the paper's Sec. 2.6) and
+`operations[i]` the strip operation performed at `path[i]` on the way to `path[i+1]`.
+*/
+template <typename PolygonMesh>
+struct Surgery_plan
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+
+  vertex_descriptor source;                  ///< the initial singularity
+  vertex_descriptor target;                  ///< the terminal singularity
+  int source_valence = 0;                    ///< valence of the initial singularity before the Q-zip
+  int target_valence = 0;                    ///< valence of the terminal singularity before the Q-zip
+  Strip_operation initial_operation = Strip_operation::LEFT_SPLIT; ///< the motion: the compass at the source
+  std::vector<vertex_descriptor> sketch;     ///< the path given to the planner, from `source` to `target`
+  std::vector<vertex_descriptor> path;       ///< the adjusted path the surgery follows
+  std::vector<Strip_operation> operations;   ///< one per vertex of `path` but the last
+  Plan_status status = Plan_status::INVALID_PATH;
+
+  bool is_realizable() const { return status == Plan_status::REALIZABLE; }
+  std::size_t number_of_collapses() const
+  { std::size_t n = 0; for(Strip_operation op : operations) if(is_collapse(op)) ++n; return n; }
+  std::size_t number_of_splits() const
+  { std::size_t n = 0; for(Strip_operation op : operations) if(is_split(op)) ++n; return n; }
+};
+
+namespace internal {
+
+enum class Turn { LEFT = 1, STRAIGHT = 0, RIGHT = -1 };
+
+// the compass transport through path vertex v (coming from u, leaving to w): the paper's Sec. 2.5 rule,
+// with the counts taken in the mesh before execution.
+template <typename PolygonMesh>
+Turn compass_turn(typename boost::graph_traits<PolygonMesh>::vertex_descriptor u,
+                  typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                  typename boost::graph_traits<PolygonMesh>::vertex_descriptor w,
+                  Strip_operation previous, const PolygonMesh& pm)
+{
+  const auto o = halfedge(v, w, pm).first;
+  const auto i = halfedge(v, u, pm).first;
+  const int q_left = ccw_steps(o, i, pm);
+  const int deg = int(valence(v, pm));
+  const int q_right = deg - q_left;
+  const bool count_left = deg == 4 || previous == Strip_operation::LEFT_SPLIT ||
+                          previous == Strip_operation::RIGHT_COLLAPSE;
+  if(count_left)
+    return q_left == 1 ? Turn::LEFT : (q_left == 2 ? Turn::STRAIGHT : Turn::RIGHT);
+  return q_right == 1 ? Turn::RIGHT : (q_right == 2 ? Turn::STRAIGHT : Turn::LEFT);
+}
+
+template <typename PolygonMesh>
+void transport_compass(const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& path,
+                       std::vector<Strip_operation>& ops, std::size_t from, const PolygonMesh& pm)
+{
+  for(std::size_t j = from; j + 1 < path.size(); ++j)
+  {
+    Strip_operation prev = ops[j - 1];
+    if(prev == Strip_operation::NO_OPERATION) continue; // only at an adjusted start, already tagged
+    const Turn t = compass_turn(path[j - 1], path[j], path[j + 1], prev, pm);
+    ops[j] = rotate(prev, int(t));
+  }
+}
+
+template <typename PolygonMesh>
+bool is_simple_edge_path(const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& path,
+                         const PolygonMesh& pm)
+{
+  if(path.size() < 2) return false;
+  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> sorted(path);
+  std::sort(sorted.begin(), sorted.end());
+  if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+  for(std::size_t j = 0; j + 1 < path.size(); ++j)
+    if(!halfedge(path[j], path[j + 1], pm).second) return false;
+  return true;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgQzipPrimitive
+
+plans a Q-zip along `sketch`, a simple edge path from the initial singularity `sketch.front()` to
+the terminal singularity `sketch.back()`, with `initial_operation` as the compass at the initial
+singularity (one of the four motions of the pair).
+
+The compass is parallel-transported along the path (paper, Sec. 2.5): straight keeps the tag, a left
+(right) turn takes the next counterclockwise (clockwise) tag, and at an irregular vertex the turn is
+decided by the number of quads on the left of the path (after LS or RC) or on its right (after RS or LC):
+one is a turn towards that side, two is straight, three or more a turn away. The ends are then
+prepared within the one-rings of the two singularities (Sec. 2.6), folds created by the preparation are
+removed, and the plan is checked against the border, constrained edges and protected faces.
+The mesh is not modified.
+
+\tparam PolygonMesh a model of `FaceGraph`
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+\param pm the polygon mesh
+\param sketch the path, as the sequence of its vertices
+\param initial_operation the compass tag at the initial singularity
+\param np optional named parameters among:
+\cgalNamedParamsBegin
+  \cgalParamNBegin{edge_is_constrained_map}
+    \cgalParamDescription{feature edges: no path vertex may be incident to one}
+    \cgalParamDefault{no edge is constrained}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_is_constrained_map}
+    \cgalParamDescription{protected faces: no path vertex may be incident to one}
+    \cgalParamDefault{no face is protected}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+\returns the plan; `plan.status` says whether it is realizable as far as can be told without executing it
+         (`execute_qzip()` checks every operation again before applying it).
+*/
+template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+Surgery_plan<PolygonMesh>
+plan_qzip(const PolygonMesh& pm,
+          const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& sketch,
+          Strip_operation initial_operation,
+          const NamedParameters& np = parameters::default_values())
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+
+  CGAL_precondition(initial_operation != Strip_operation::NO_OPERATION);
+  const auto ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
+                                    Static_boolean_property_map<edge_descriptor, false>());
+  const auto fcm = choose_parameter(get_parameter(np, Qzip::internal_np::face_is_constrained),
+                                    Static_boolean_property_map<face_descriptor, false>());
+
+  Surgery_plan<PolygonMesh> plan;
+  plan.sketch = sketch;
+  plan.initial_operation = initial_operation;
+  if(!internal::is_simple_edge_path(sketch, pm)) { plan.status = Plan_status::INVALID_PATH; return plan; }
+  plan.source = sketch.front();
+  plan.target = sketch.back();
+  plan.source_valence = int(internal::valence(plan.source, pm));
+  plan.target_valence = int(internal::valence(plan.target, pm));
+  for(vertex_descriptor e : { plan.source, plan.target })
+  {
+    const std::size_t d = internal::valence(e, pm);
+    if((d != 3 && d != 5) || internal::is_border_vertex(e, pm))
+    { plan.status = Plan_status::UNSUPPORTED_ENDPOINT; return plan; }
+  }
+
+  plan.path = sketch;
+  plan.operations.assign(sketch.size(), Strip_operation::NO_OPERATION);
+  plan.operations[0] = initial_operation;
+  internal::transport_compass(plan.path, plan.operations, 1, pm);
+
+  // Start first: a v3 start with a collapse re-routes the first edges (n, d, v1), and the compass is
+  // transported again from v1 on the new incoming edge, which matters when v1 is irregular. Then the
+  // end, with the tag that reaches it. On a one-edge path the end rule may turn the start tag into a
+  // split (v5 end with a collapse), and the start rule for splits applies then.
+  internal::Endpoint_preparation<PolygonMesh> prep(pm);
+  auto transport = [&pm](vertex_descriptor u, vertex_descriptor v, vertex_descriptor w, Strip_operation prev)
+  { return rotate(prev, int(internal::compass_turn(u, v, w, prev, pm))); };
+  std::size_t retransport_from = 0;
+  Plan_status st = prep.prepare_start(plan.path, plan.operations, retransport_from);
+  if(st == Plan_status::REALIZABLE && retransport_from > 0)
+    internal::transport_compass(plan.path, plan.operations, retransport_from, pm);
+  const Strip_operation start_tag = plan.operations[0];
+  if(st == Plan_status::REALIZABLE) st = prep.prepare_end(plan.path, plan.operations, initial_operation, transport);
+  if(st == Plan_status::REALIZABLE && plan.path[0] == plan.source && plan.operations[0] != start_tag &&
+     is_split(plan.operations[0]))
+    st = prep.prepare_start(plan.path, plan.operations, retransport_from);
+  if(st == Plan_status::REALIZABLE) st = prep.remove_folds(plan.path, plan.operations);
+  if(st == Plan_status::REALIZABLE && !internal::is_simple_edge_path(plan.path, pm))
+    st = Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT;
+  if(st != Plan_status::REALIZABLE) { plan.status = st; return plan; }
+
+  // every vertex the chain operates on is a path vertex or one of its neighbours: keep the path
+  // away from the border (collapses of border faces) and from features and protected faces.
+  for(vertex_descriptor v : plan.path)
+    for(auto h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      if(is_border_edge(h, pm) || get(ecm, edge(h, pm)) ||
+         (!is_border(h, pm) && get(fcm, face(h, pm))))
+      { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
+    }
+  plan.status = Plan_status::REALIZABLE;
+  return plan;
+}
+
+/*!
+\ingroup PkgQzipPrimitive
+plans the four motions of the pair joined by `sketch`: one plan per initial operation, in the order
+`LEFT_SPLIT`, `RIGHT_COLLAPSE`, `LEFT_COLLAPSE`, `RIGHT_SPLIT`. Same parameters as `plan_qzip()`.
+*/
+template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+std::array<Surgery_plan<PolygonMesh>, 4>
+plan_qzip_motions(const PolygonMesh& pm,
+                  const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& sketch,
+                  const NamedParameters& np = parameters::default_values())
+{
+  std::array<Surgery_plan<PolygonMesh>, 4> plans;
+  for(int m = 0; m < 4; ++m)
+    plans[std::size_t(m)] = plan_qzip(pm, sketch, Strip_operation(m), np);
+  return plans;
+}
+
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_SURGERY_PLAN_H
