@@ -1,9 +1,13 @@
-// Tests of the Q-zip primitive: planning, execution, invariants, undo, homotopy invariance.
+// Tests of the Q-zip primitive: planning, execution, invariants, undo, homotopy invariance, refusals.
 #include "qzip_test_utils.h"
 
 #include <CGAL/Qzip/qzip.h>
+#include <CGAL/Qzip/preprocess.h>
 
 #include <CGAL/Random.h>
+
+#include <deque>
+#include <set>
 
 using namespace qzip_test;
 namespace Q = CGAL::Qzip;
@@ -35,63 +39,538 @@ std::vector<Point> sorted_points(const Mesh& m)
   return out;
 }
 
-/// plants the four singularities of a chain of k collapses along a row of a torus grid (see
-/// QZIP_OPERATIONS.md, "Planting pairs"): p_0 (3), p_1 (5), p_k (5), r_k (3).
 template <typename Mesh>
-void plant_chain(Mesh& m, int nx, int ny, int row, int col, int k, bool along_rows)
+std::vector<int> border_valences(const Mesh& m)
 {
-  make_quad_torus(m, nx, ny);
+  std::vector<int> out;
+  for(auto v : vertices(m)) if(on_border(v, m)) out.push_back(valence(v, m));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// What a Q-zip must preserve, measured on the whole mesh before it.
+template <typename Mesh>
+struct Snapshot
+{
+  long chi;
+  std::size_t faces, quads;
+  std::vector<int> singular, border;
+  explicit Snapshot(const Mesh& m)
+    : chi(euler_characteristic(m)), faces(CGAL::faces(m).size()), quads(0), singular(singular_valences(m)),
+      border(border_valences(m))
+  {
+    for(auto f : CGAL::faces(m)) if(CGAL::halfedges_around_face(halfedge(f, m), m).size() == 4) ++quads;
+  }
+};
+
+struct Counters
+{
+  std::size_t done = 0, refused = 0, rolled_back = 0, cancelling = 0, located = 0, checked_moves = 0;
+  void print(const char* what) const
+  {
+    std::cout << "  " << what << ": " << done << " done (" << cancelling << " cancelling singularities, "
+              << located << " with the moved pair located, " << checked_moves << " moves checked to be one edge), " << refused << " refused by the plan, "
+              << rolled_back << " rolled back" << std::endl;
+  }
+};
+
+/// the invariants of a done Q-zip, checked globally (independently of the executor's own checks).
+template <typename Mesh>
+void check_done(const Mesh& m, const Snapshot<Mesh>& before, const Q::Qzip_result<Mesh>& r, Counters& c)
+{
+  assert(r.is_done());
+  assert(CGAL::is_valid_polygon_mesh(m));
+  assert(euler_characteristic(m) == before.chi);
+  const Snapshot<Mesh> after(m);
+  // every quad is still a quad, every other face untouched; faces change by splits - collapses
+  assert(after.faces - before.faces == after.quads - before.quads);
+  assert(long(after.faces) - long(before.faces) == long(r.number_of_splits) - long(r.number_of_collapses));
+  assert(after.border == before.border);
+  // no singularity created: the singular valences after are a sub-multiset of those before
+  assert(std::includes(before.singular.begin(), before.singular.end(), after.singular.begin(), after.singular.end()));
+  for(int d : after.singular) assert(d == 3 || d == 5 || std::count(before.singular.begin(), before.singular.end(), d) > 0);
+  ++c.done;
+  if(after.singular != before.singular) { ++c.cancelling; return; }
+  if(r.moved_source != boost::graph_traits<Mesh>::null_vertex())
+  {
+    ++c.located;
+    assert(r.moved_target != boost::graph_traits<Mesh>::null_vertex());
+    assert(!on_border(r.moved_source, m) && valence(r.moved_source, m) != 4);
+    assert(!on_border(r.moved_target, m) && valence(r.moved_target, m) != 4);
+  }
+  for(auto f : r.scar_faces) assert(CGAL::halfedges_around_face(halfedge(f, m), m).size() == 4);
+}
+
+/// the graph distance in `m` from `s` to the vertex of `m` nearest to `p` (a proxy for "where a vertex
+/// of the edited mesh sits in the original one").
+template <typename Mesh>
+int distance_to_nearest(const Mesh& m, typename boost::graph_traits<Mesh>::vertex_descriptor s, const Point& p)
+{
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-  std::vector<vertex_descriptor> vs(vertices(m).begin(), vertices(m).end());
-  auto id = [&](int i, int j) { return vs[std::size_t(((j + ny) % ny) * nx + (i + nx) % nx)]; };
+  vertex_descriptor best = s;
+  double best_d = CGAL::squared_distance(get(CGAL::vertex_point, m, s), p);
+  for(auto v : vertices(m))
+  {
+    const double d = CGAL::squared_distance(get(CGAL::vertex_point, m, v), p);
+    if(d < best_d) { best_d = d; best = v; }
+  }
+  std::map<vertex_descriptor, int> dist;
+  std::deque<vertex_descriptor> queue(1, s);
+  dist[s] = 0;
+  while(!queue.empty())
+  {
+    const vertex_descriptor v = queue.front(); queue.pop_front();
+    if(v == best) return dist[v];
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+      if(!dist.count(source(h, m))) { dist[source(h, m)] = dist[v] + 1; queue.push_back(source(h, m)); }
+  }
+  return -1;
+}
+
+/// no singular vertex but `v` and `partner` within `radius` edges of `v`.
+template <typename Mesh>
+bool is_isolated(const Mesh& m, typename boost::graph_traits<Mesh>::vertex_descriptor v,
+                 typename boost::graph_traits<Mesh>::vertex_descriptor partner, int radius)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::map<vertex_descriptor, int> dist;
+  std::deque<vertex_descriptor> queue(1, v);
+  dist[v] = 0;
+  while(!queue.empty())
+  {
+    const vertex_descriptor x = queue.front(); queue.pop_front();
+    if(x != v && x != partner && (on_border(x, m) || valence(x, m) != 4)) return false;
+    if(dist[x] == radius) continue;
+    for(auto h : CGAL::halfedges_around_target(halfedge(x, m), m))
+      if(!dist.count(source(h, m))) { dist[source(h, m)] = dist[x] + 1; queue.push_back(source(h, m)); }
+  }
+  return true;
+}
+
+/// plants the four singularities of a chain of k collapses along a row (or column) of a planar grid:
+/// p_0 (3), p_1 (5), p_k (5), r_k (3), where p is the row and r the row below.
+template <typename Mesh>
+void plant_chain(Mesh& m, int n, int row, int col, int k, bool along_rows)
+{
+  make_quad_grid(m, n, n);
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::map<std::pair<int, int>, vertex_descriptor> at;
+  for(auto v : vertices(m))
+  {
+    const Point& p = get(CGAL::vertex_point, m, v);
+    at[std::make_pair(int(p.x()), int(p.y()))] = v;
+  }
+  auto id = [&](int i, int j) { return along_rows ? at[std::make_pair(i, j)] : at[std::make_pair(j, i)]; };
   for(int s = 0; s < k; ++s)
   {
-    // quad with corners p_s, p_{s+1}, r_{s+1}, r_s; r_s merges into p_{s+1}
-    vertex_descriptor p1 = along_rows ? id(col + s + 1, row) : id(col, row + s + 1);
-    vertex_descriptor r0 = along_rows ? id(col + s, row - 1) : id(col - 1, row + s);
-    // the halfedge of the quad whose target is p1 and whose opposite corner is r0
+    const vertex_descriptor p1 = id(col + s + 1, row), r0 = id(col + s, row - 1);
     bool done = false;
     for(auto h : CGAL::halfedges_around_target(halfedge(p1, m), m))
-    {
-      if(is_border(h, m)) continue;
-      if(target(next(next(h, m), m), m) == r0 && Q::can_collapse_quad(h, m)) { Q::quad_collapse(h, m); done = true; break; }
-    }
+      if(!is_border(h, m) && target(next(next(h, m), m), m) == r0 && Q::can_collapse_quad(h, m))
+      { Q::quad_collapse(h, m); done = true; break; }
     assert(done);
   }
 }
 
-int main()
+/// every ordered pair of the planted singularities, four motions each: invariants, the moved pair within
+/// one edge of where it was (positions of a planar grid as a proxy), exact undo.
+template <typename Mesh>
+void test_planted_pairs(Counters& c)
 {
-  Surface_mesh m;
-  plant_chain(m, 24, 24, 10, 6, 6, true);
-  auto sing = singular_vertices(m);
-  std::cout << "planted " << sing.size() << " singularities:";
-  for(auto v : sing) std::cout << " " << v << "(" << valence(v, m) << ")";
-  std::cout << std::endl;
-  int ok = 0, refused = 0, failed = 0;
+  for(int k : { 2, 3, 6, 11 })
+    for(bool rows : { true, false })
+    {
+      Mesh m;
+      plant_chain(m, 30, 12, 8, k, rows);
+      const auto sing = singular_vertices(m);
+      assert(sing.size() == 4);
+      for(std::size_t i = 0; i < sing.size(); ++i)
+        for(std::size_t j = 0; j < sing.size(); ++j)
+          for(int mo = 0; i != j && mo < 4; ++mo)
+          {
+            Mesh w;
+            auto v2v = copy_mesh_with_map(m, w);
+            const auto s = v2v[sing[i]], t = v2v[sing[j]];
+            const Snapshot<Mesh> before(w);
+            const auto path = Q::shortest_surgery_path(w, s, t);
+            assert(!path.empty() && path.front() == s && path.back() == t);
+            const auto plan = Q::plan_qzip(w, path, Q::Strip_operation(mo));
+            if(!plan.is_realizable()) { ++c.refused; continue; }
+            Q::Qzip_history<Mesh> history(w);
+            const auto r = Q::execute_qzip(w, plan, history);
+            if(!r.is_done()) { ++c.rolled_back; assert(are_isomorphic(w, m) && sorted_points(w) == sorted_points(m)); continue; }
+            const std::size_t located = c.located;
+            check_done(w, before, r, c);
+            if(c.located > located)
+            {
+              // each singularity moved by one edge: it sits next to where it was
+              // each singularity moved by one edge: it sits next to where it was (checked where no third
+              // singularity is close enough to be confused with it)
+              const int ds = distance_to_nearest(m, sing[i], get(CGAL::vertex_point, w, r.moved_source));
+              const int dt = distance_to_nearest(m, sing[j], get(CGAL::vertex_point, w, r.moved_target));
+              if(is_isolated(m, sing[i], sing[j], 2)) { assert(ds <= 1); ++c.checked_moves; }
+              if(is_isolated(m, sing[j], sing[i], 2)) { assert(dt <= 1); ++c.checked_moves; }
+
+            }
+            assert(history.size() == 1);
+            Q::undo_qzip(history);
+            assert(history.empty());
+            assert(CGAL::is_valid_polygon_mesh(w));
+            assert(are_isomorphic(w, m));
+            assert(sorted_points(w) == sorted_points(m));
+          }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Homotopy invariance (paper, Sec. 3.1)
+
+template <typename Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>
+bfs_path(const Mesh& m, typename boost::graph_traits<Mesh>::vertex_descriptor a,
+         typename boost::graph_traits<Mesh>::vertex_descriptor b,
+         const std::set<typename boost::graph_traits<Mesh>::vertex_descriptor>& forbidden)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::map<vertex_descriptor, vertex_descriptor> pred;
+  std::deque<vertex_descriptor> queue(1, a);
+  pred[a] = a;
+  while(!queue.empty())
+  {
+    const vertex_descriptor v = queue.front(); queue.pop_front();
+    if(v == b) break;
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+    {
+      const vertex_descriptor u = source(h, m);
+      if(pred.count(u) || forbidden.count(u) || on_border(u, m)) continue;
+      pred[u] = v;
+      queue.push_back(u);
+    }
+  }
+  std::vector<vertex_descriptor> path;
+  if(!pred.count(b)) return path;
+  for(vertex_descriptor v = b; v != a; v = pred[v]) path.push_back(v);
+  path.push_back(a);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+/// winding number of the closed polygon `loop` (positions in the plane z = 0) around `p`.
+inline int winding_number(const std::vector<Point>& loop, const Point& p)
+{
+  double total = 0;
+  for(std::size_t i = 0; i < loop.size(); ++i)
+  {
+    const Point& a = loop[i];
+    const Point& b = loop[(i + 1) % loop.size()];
+    total += std::atan2((a.x() - p.x()) * (b.y() - p.y()) - (a.y() - p.y()) * (b.x() - p.x()),
+                        (a.x() - p.x()) * (b.x() - p.x()) + (a.y() - p.y()) * (b.y() - p.y()));
+  }
+  return int(std::lround(total / (2 * CGAL_PI)));
+}
+
+/// random paths through waypoints between planted singularities, avoiding the other singularities;
+/// two paths whose loop winds around no other singularity are homotopic and must give isomorphic meshes.
+template <typename Mesh>
+void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& distinct_classes_differing)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  CGAL::Random rng(seed);
+  Mesh m;
+  plant_chain(m, 24, 11, 7, 5, true);
+  // a second pair of singularities to wind around: one split of a regular vertex between opposite edges
+  for(auto v : vertices(m))
+    if(get(CGAL::vertex_point, m, v) == Point(12, 17, 0))
+    {
+      auto h1 = halfedge(v, m);
+      auto h2 = opposite(next(opposite(next(h1, m), m), m), m);
+      auto q = Q::split_vertex_into_quad(h1, h2, m);
+      const auto c = target(next(next(q, m), m), m);
+      put(get(CGAL::vertex_point, m), c, Point(12.4, 17.4, 0));
+      break;
+    }
+  const auto sing = singular_vertices(m);
+  std::vector<vertex_descriptor> inner;
+  for(auto v : vertices(m)) if(!on_border(v, m) && valence(v, m) == 4) inner.push_back(v);
   for(std::size_t i = 0; i < sing.size(); ++i)
     for(std::size_t j = 0; j < sing.size(); ++j)
     {
       if(i == j) continue;
+      const vertex_descriptor s = sing[i], t = sing[j];
+      std::set<vertex_descriptor> others;
+      for(auto x : sing) if(x != s && x != t) others.insert(x);
+      // a handful of waypoint paths
+      std::vector<std::vector<vertex_descriptor> > paths;
+      for(int attempt = 0; attempt < 40 && paths.size() < 6; ++attempt)
+      {
+        const vertex_descriptor q = inner[std::size_t(rng.get_int(0, int(inner.size())))];
+        std::set<vertex_descriptor> forbid1 = others; forbid1.insert(t);
+        auto p1 = bfs_path(m, s, q, forbid1);
+        if(p1.empty()) continue;
+        std::set<vertex_descriptor> forbid2 = others;
+        for(std::size_t x = 0; x + 1 < p1.size(); ++x) forbid2.insert(p1[x]);
+        auto p2 = bfs_path(m, q, t, forbid2);
+        if(p2.empty()) continue;
+        p1.insert(p1.end(), p2.begin() + 1, p2.end());
+        paths.push_back(p1);
+      }
       for(int mo = 0; mo < 4; ++mo)
       {
-        Surface_mesh w; auto v2v = copy_mesh_with_map(m, w);
-        auto s = v2v[sing[i]];
-        auto t = v2v[sing[j]];
-        auto path = Q::shortest_surgery_path(w, s, t);
-        auto plan = Q::plan_qzip(w, path, Q::Strip_operation(mo));
-        if(!plan.is_realizable()) { ++refused; std::cout << "  refused " << i << "->" << j << " " << Q::short_name(Q::Strip_operation(mo)) << ": " << Q::describe(plan.status) << std::endl; continue; }
-        auto r = Q::execute_qzip(w, plan);
-        if(!r.is_done()) { ++failed; std::cout << "  FAILED " << i << "->" << j << " " << Q::short_name(Q::Strip_operation(mo)) << " path " << path.size() << std::endl; assert(are_isomorphic(w, m)); continue; }
-        assert(CGAL::is_valid_polygon_mesh(w));
-        assert(all_faces_have_degree(w, 4));
-        assert(euler_characteristic(w) == euler_characteristic(m));
-        auto a = singular_valences(w), b = singular_valences(m);
-        assert(std::includes(b.begin(), b.end(), a.begin(), a.end()));
-        if(a != b) std::cout << "  cancelled " << (b.size() - a.size()) << " singularities " << i << "->" << j << " " << Q::short_name(Q::Strip_operation(mo)) << std::endl;
-        ++ok;
+        std::vector<Mesh> results(paths.size());
+        std::vector<bool> done(paths.size(), false);
+        for(std::size_t a = 0; a < paths.size(); ++a)
+        {
+          auto v2v = copy_mesh_with_map(m, results[a]);
+          std::vector<vertex_descriptor> path;
+          for(auto v : paths[a]) path.push_back(v2v[v]);
+          const auto plan = Q::plan_qzip(results[a], path, Q::Strip_operation(mo));
+          if(!plan.is_realizable()) continue;
+          done[a] = Q::execute_qzip(results[a], plan).is_done();
+        }
+        for(std::size_t a = 0; a < paths.size(); ++a)
+          for(std::size_t b = a + 1; b < paths.size(); ++b)
+          {
+            if(!done[a] || !done[b]) continue;
+            // the initial tag is a motion relative to the first edge: compare paths that leave s alike
+            if(paths[a][1] != paths[b][1]) continue;
+            std::vector<Point> loop;
+            for(auto v : paths[a]) loop.push_back(get(CGAL::vertex_point, m, v));
+            for(std::size_t x = paths[b].size() - 1; x-- > 1;) loop.push_back(get(CGAL::vertex_point, m, paths[b][x]));
+            bool homotopic = true;
+            for(auto o : others) if(winding_number(loop, get(CGAL::vertex_point, m, o)) != 0) homotopic = false;
+            const bool iso = are_isomorphic(results[a], results[b]);
+            if(homotopic) { assert(iso); ++homotopic_pairs; }
+            else if(!iso) ++distinct_classes_differing;
+          }
       }
     }
-  std::cout << ok << " ok, " << refused << " refused, " << failed << " failed" << std::endl;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Random Q-zips on real meshes, with every result checked and everything undone at the end
+
+template <typename Mesh>
+std::size_t random_qzips(Mesh& m, std::size_t count, unsigned seed, Counters& c)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  CGAL::Random rng(seed);
+  Mesh original;
+  copy_mesh(m, original);
+  Q::Qzip_history<Mesh> history(m);
+  std::size_t attempts = 0;
+  while(history.size() < count && attempts < 20 * count)
+  {
+    ++attempts;
+    const auto sing = singular_vertices(m);
+    if(sing.size() < 2) break;
+    const vertex_descriptor s = sing[std::size_t(rng.get_int(0, int(sing.size())))];
+    // a singularity among the close ones: bounded BFS
+    const int reach = rng.get_int(1, 16);
+    std::map<vertex_descriptor, int> dist;
+    std::deque<vertex_descriptor> queue(1, s);
+    dist[s] = 0;
+    std::vector<vertex_descriptor> candidates;
+    while(!queue.empty())
+    {
+      const vertex_descriptor v = queue.front(); queue.pop_front();
+      if(dist[v] >= reach) continue;
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+      {
+        const vertex_descriptor u = source(h, m);
+        if(dist.count(u)) continue;
+        dist[u] = dist[v] + 1;
+        queue.push_back(u);
+        if(!on_border(u, m) && valence(u, m) != 4) candidates.push_back(u);
+      }
+    }
+    if(candidates.empty()) continue;
+    const vertex_descriptor t = candidates[std::size_t(rng.get_int(0, int(candidates.size())))];
+    const auto path = Q::shortest_surgery_path(m, s, t);
+    if(path.empty()) continue;
+    const auto plan = Q::plan_qzip(m, path, Q::Strip_operation(rng.get_int(0, 4)));
+    if(!plan.is_realizable()) { ++c.refused; continue; }
+    const Snapshot<Mesh> before(m);
+    const std::size_t recorded = history.size();
+    const auto r = Q::execute_qzip(m, plan, history);
+    if(!r.is_done())
+    {
+      ++c.rolled_back;
+      assert(history.size() == recorded);
+      assert(CGAL::is_valid_polygon_mesh(m) && singular_valences(m) == before.singular);
+      continue;
+    }
+    assert(history.size() == recorded + 1);
+    check_done(m, before, r, c);
+  }
+  const std::size_t n = history.size();
+  history.undo_all();
+  assert(CGAL::is_valid_polygon_mesh(m));
+  assert(are_isomorphic(m, original));
+  assert(sorted_points(m) == sorted_points(original));
+  return n;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Refusals, constraints, visitor, named parameters
+
+struct Counting_visitor : Q::Default_qzip_visitor<Surface_mesh>
+{
+  int started = 0, collapses = 0, splits = 0, finished = 0;
+  void on_qzip_started(const Q::Surgery_plan<Surface_mesh>&) { ++started; }
+  void on_collapse(halfedge_descriptor, const Surface_mesh&) { ++collapses; }
+  void on_split(halfedge_descriptor, halfedge_descriptor, const Surface_mesh&) { ++splits; }
+  void on_qzip_finished(const Q::Surgery_plan<Surface_mesh>&, bool) { ++finished; }
+};
+
+void test_refusals_and_parameters()
+{
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
+  typedef boost::graph_traits<Surface_mesh>::edge_descriptor edge_descriptor;
+  typedef boost::graph_traits<Surface_mesh>::face_descriptor face_descriptor;
+  Surface_mesh m;
+  plant_chain(m, 24, 10, 5, 9, true);
+  const auto sing = singular_vertices(m);
+  vertex_descriptor s = sing[0], t = sing[1];
+  for(auto a : sing) for(auto b : sing)
+    if(a != b && Q::shortest_surgery_path(m, a, b).size() > Q::shortest_surgery_path(m, s, t).size()) { s = a; t = b; }
+  const auto path = Q::shortest_surgery_path(m, s, t);
+  assert(path.size() >= 9);
+
+  // invalid paths and endpoints
+  std::vector<vertex_descriptor> broken = { path[0], path[2] };
+  assert(Q::plan_qzip(m, broken, Q::Strip_operation::LEFT_SPLIT).status == Q::Plan_status::INVALID_PATH);
+  std::vector<vertex_descriptor> looped = { path[0], path[1], path[0] };
+  assert(Q::plan_qzip(m, looped, Q::Strip_operation::LEFT_SPLIT).status == Q::Plan_status::INVALID_PATH);
+  std::vector<vertex_descriptor> regular_end(path.begin(), path.end() - 1);
+  if(valence(regular_end.back(), m) == 4)
+    assert(Q::plan_qzip(m, regular_end, Q::Strip_operation::LEFT_SPLIT).status == Q::Plan_status::UNSUPPORTED_ENDPOINT);
+  assert(Q::shortest_surgery_path(m, s, s).empty());
+
+  // a protected face on the path: the planner refuses the path, the search goes around
+  std::set<face_descriptor> protected_faces;
+  for(auto h : CGAL::halfedges_around_target(halfedge(path[5], m), m))
+    if(!is_border(h, m)) protected_faces.insert(face(h, m));
+  auto fcm = CGAL::Boolean_property_map<std::set<face_descriptor> >(protected_faces);
+  assert(Q::plan_qzip(m, path, Q::Strip_operation::LEFT_SPLIT, Q::parameters::face_is_constrained_map(fcm)).status ==
+         Q::Plan_status::BORDER_OR_CONSTRAINED);
+  const auto detour = Q::shortest_surgery_path(m, s, t, Q::parameters::face_is_constrained_map(fcm));
+  assert(!detour.empty());
+  for(std::size_t i = 1; i + 1 < detour.size(); ++i)
+    for(auto h : CGAL::halfedges_around_target(halfedge(detour[i], m), m))
+      assert(is_border(h, m) || protected_faces.count(face(h, m)) == 0);
+
+  // protected faces and feature edges are bit-identical after every Q-zip along the detour
+  std::map<face_descriptor, std::vector<Point> > protected_corners;
+  for(auto f : protected_faces)
+    for(auto v : CGAL::vertices_around_face(halfedge(f, m), m)) protected_corners[f].push_back(get(CGAL::vertex_point, m, v));
+  std::set<edge_descriptor> features;
+  for(auto h : CGAL::halfedges_around_target(halfedge(path[3], m), m)) features.insert(edge(h, m));
+  std::map<edge_descriptor, std::pair<Point, Point> > feature_ends;
+  for(auto e : features)
+    feature_ends[e] = std::make_pair(get(CGAL::vertex_point, m, source(e, m)), get(CGAL::vertex_point, m, target(e, m)));
+  auto ecm = CGAL::Boolean_property_map<std::set<edge_descriptor> >(features);
+  Counting_visitor visitor;
+  std::size_t done = 0;
+  for(int mo = 0; mo < 4; ++mo)
+  {
+    Surface_mesh w = m;  // Surface_mesh copies keep descriptors
+    auto np = Q::parameters::combine(CGAL::parameters::edge_is_constrained_map(ecm).visitor(std::ref(visitor)),
+                                     Q::parameters::face_is_constrained_map(fcm));
+    const auto r = Q::qzip(w, s, t, Q::Strip_operation(mo), np);
+    if(!r.is_done()) continue;
+    ++done;
+    for(const auto& kv : protected_corners)
+    {
+      assert(!w.is_removed(kv.first));
+      std::vector<Point> now;
+      for(auto v : CGAL::vertices_around_face(halfedge(kv.first, w), w)) now.push_back(get(CGAL::vertex_point, w, v));
+      assert(now == kv.second);
+    }
+    for(const auto& kv : feature_ends)
+    {
+      assert(!w.is_removed(kv.first));
+      assert(get(CGAL::vertex_point, w, source(kv.first, w)) == kv.second.first);
+      assert(get(CGAL::vertex_point, w, target(kv.first, w)) == kv.second.second);
+    }
+  }
+  assert(done > 0);
+  assert(visitor.started > 0 && visitor.finished == visitor.started && visitor.collapses + visitor.splits > 0);
+
+  // with a user vertex point map, that map moves and the internal points stay
+  Surface_mesh w = m;
+  auto pts = w.add_property_map<vertex_descriptor, Point>("v:mine", Point(0, 0, 0)).first;
+  std::map<vertex_descriptor, Point> native;
+  for(auto v : vertices(w)) { put(pts, v, get(CGAL::vertex_point, w, v)); native[v] = get(CGAL::vertex_point, w, v); }
+  const auto r = Q::qzip(w, s, t, Q::Strip_operation::LEFT_COLLAPSE, CGAL::parameters::vertex_point_map(pts));
+  assert(r.is_done());
+  bool moved_mine = false;
+  for(auto v : vertices(w))
+  {
+    auto it = native.find(v);
+    if(it == native.end()) continue;
+    if(!r.is_done()) continue;
+    if(std::find(r.touched_vertices.begin(), r.touched_vertices.end(), v) == r.touched_vertices.end())
+      assert(get(CGAL::vertex_point, w, v) == it->second);
+    if(get(pts, v) != get(CGAL::vertex_point, w, v)) moved_mine = true;
+  }
+  assert(moved_mine);
+}
+
+template <typename Mesh>
+void run_corpus_file(const std::string& path, std::size_t count, unsigned seed, Counters& c)
+{
+  Mesh m;
+  assert(read_mesh(path, m));
+  Q::preprocess_valences(m);
+  const std::size_t n = random_qzips(m, count, seed, c);
+  std::cout << "  " << path << ": " << n << " Q-zips undone exactly" << std::endl;
+}
+
+int main(int argc, char** argv)
+{
+  const std::size_t per_mesh = argc > 1 ? std::size_t(std::atoi(argv[1])) : 150;
+
+  Counters planted_sm, planted_ph;
+  test_planted_pairs<Surface_mesh>(planted_sm);
+  planted_sm.print("planted pairs, Surface_mesh");
+  test_planted_pairs<Polyhedron>(planted_ph);
+  planted_ph.print("planted pairs, Polyhedron_3");
+  assert(planted_sm.done > 0 && planted_sm.located > 0);
+  assert(planted_sm.done == planted_ph.done && planted_sm.located == planted_ph.located);
+
+  std::size_t homotopic = 0, differing = 0;
+  for(unsigned seed = 1; seed <= 3; ++seed) test_homotopy<Surface_mesh>(seed, homotopic, differing);
+  test_homotopy<Polyhedron>(4, homotopic, differing);
+  std::cout << "  homotopy: " << homotopic << " homotopic path pairs gave isomorphic meshes; "
+            << differing << " non-homotopic pairs gave different meshes" << std::endl;
+  assert(homotopic > 100);
+
+  test_refusals_and_parameters();
+  std::cout << "  refusals, constraints, visitor and named parameters ok" << std::endl;
+
+  Counters random_sm, random_ph;
+  for(const std::string f : { "data/polylap_amo_quad.off", "data/pmp_fandisk_quads.off", "data/polylap_suzanne_half.obj",
+                              "data/quadriflow_gargoyle.obj", "data/trimesh_target.obj" })
+    run_corpus_file<Surface_mesh>(f, per_mesh, 7, random_sm);
+  for(const std::string f : { CGAL::data_file_path("meshes/spot_quadrangulated.obj"),
+                              CGAL::data_file_path("meshes/blub_quadrangulated.obj") })
+    run_corpus_file<Surface_mesh>(f, per_mesh, 8, random_sm);
+  run_corpus_file<Polyhedron>("data/polylap_amo_quad.off", per_mesh / 2, 9, random_ph);
+  run_corpus_file<Polyhedron>(CGAL::data_file_path("meshes/spot_quadrangulated.obj"), per_mesh / 2, 10, random_ph);
+  random_sm.print("random Q-zips on bundled meshes, Surface_mesh");
+  random_ph.print("random Q-zips on bundled meshes, Polyhedron_3");
+  assert(random_sm.done > 0 && random_ph.done > 0);
+
+  const std::string dir = shared_corpus_dir("random Q-zips on the shared corpus");
+  if(!dir.empty())
+  {
+    Counters shared;
+    for(const std::string& f : shared_corpus_files())
+    {
+      if(f == "trimesh_quadknot.obj") continue; // no singularity at all
+      run_corpus_file<Surface_mesh>(dir + "/" + f, per_mesh / 3, 11, shared);
+    }
+    shared.print("random Q-zips on the shared corpus, Surface_mesh");
+  }
   return EXIT_SUCCESS;
 }

@@ -56,20 +56,37 @@ struct Qzip_result
 
 /*!
 \ingroup PkgQzipPrimitive
-The exact record of an executed Q-zip, to undo it by `undo_qzip()`. Valid as long as the mesh is not
-modified by anything else than Q-zips recorded (and undone) in last-in first-out order.
+The history of the Q-zips executed on a mesh through `execute_qzip(pm, plan, history, np)`, to undo
+them exactly, most recent first, without storing any copy of the mesh: each Q-zip is recorded as its
+chain of atomic operations, and undoing applies their inverses in reverse order. Connectivity and every
+position come back exactly (elements re-created by an undo may have new descriptors).
+
+\pre Between a Q-zip and its undo, the mesh is only modified by Q-zips recorded in this history
+(and by undos of later ones).
 */
-template <typename PolygonMesh, typename VertexPointMap>
-class Qzip_undo_record
+template <typename PolygonMesh,
+          typename VertexPointMap = typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>
+class Qzip_history
 {
   std::shared_ptr<internal::Operation_log<PolygonMesh, VertexPointMap> > log;
 public:
-  Qzip_undo_record() {}
-  explicit Qzip_undo_record(std::shared_ptr<internal::Operation_log<PolygonMesh, VertexPointMap> > l) : log(l) {}
-  /// `true` when there is something to undo.
-  bool is_valid() const { return log && !log->empty(); }
-  /// undoes the recorded Q-zip.
-  void undo() { if(log) log->rollback(); }
+  /// an empty history of `pm`, whose positions are in `vpm`.
+  explicit Qzip_history(PolygonMesh& pm, VertexPointMap vpm)
+    : log(std::make_shared<internal::Operation_log<PolygonMesh, VertexPointMap> >(pm, vpm)) {}
+  /// an empty history of `pm`, with its internal vertex point map.
+  explicit Qzip_history(PolygonMesh& pm)
+    : log(std::make_shared<internal::Operation_log<PolygonMesh, VertexPointMap> >(pm, get(CGAL::vertex_point, pm))) {}
+  /// the number of recorded Q-zips.
+  std::size_t size() const { return log->number_of_marks(); }
+  /// `true` when there is nothing to undo.
+  bool empty() const { return size() == 0; }
+  /// undoes the most recent recorded Q-zip. \pre `!empty()`
+  void undo_last() { CGAL_precondition(!empty()); log->rollback_to_mark(); }
+  /// undoes every recorded Q-zip.
+  void undo_all() { while(!empty()) undo_last(); }
+  /// \cond SKIP_IN_MANUAL
+  internal::Operation_log<PolygonMesh, VertexPointMap>& operation_log() { return *log; }
+  /// \endcond
 };
 
 /*!
@@ -113,33 +130,27 @@ Qzip_result<PolygonMesh> execute_qzip(PolygonMesh& pm, const Surgery_plan<Polygo
 
 /*!
 \ingroup PkgQzipPrimitive
-same as `execute_qzip()`, and fills `record` so that `undo_qzip(record)` undoes the Q-zip exactly.
+same as `execute_qzip()`, and records the Q-zip in `history` (when it is done) so that
+`undo_qzip(history)` undoes it exactly. The positions are those of the history's vertex point map.
 */
 template <typename PolygonMesh, typename VertexPointMap, typename NamedParameters = parameters::Default_named_parameters>
 Qzip_result<PolygonMesh> execute_qzip(PolygonMesh& pm, const Surgery_plan<PolygonMesh>& plan,
-                                      Qzip_undo_record<PolygonMesh, VertexPointMap>& record,
+                                      Qzip_history<PolygonMesh, VertexPointMap>& history,
                                       const NamedParameters& np = parameters::default_values())
 {
-  auto vpm = parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                          get_property_map(vertex_point, pm));
-  static_assert(std::is_same<decltype(vpm), VertexPointMap>::value,
-                "the record's vertex point map type must be the one of the named parameters");
-  auto log = std::make_shared<internal::Operation_log<PolygonMesh, VertexPointMap> >(pm, vpm);
-  internal::Chain_executor<PolygonMesh, VertexPointMap, NamedParameters> exec(pm, *log, np);
-  Qzip_result<PolygonMesh> r = exec.run(plan);
-  record = Qzip_undo_record<PolygonMesh, VertexPointMap>(r.is_done() ? log : nullptr);
-  return r;
+  internal::Chain_executor<PolygonMesh, VertexPointMap, NamedParameters> exec(pm, history.operation_log(), np);
+  return exec.run(plan);
 }
 
 /*!
 \ingroup PkgQzipPrimitive
-undoes a Q-zip recorded by `execute_qzip()`: the inverse atomic operations in reverse order, which
-restores the connectivity (up to descriptors of re-created elements) and every position exactly.
+undoes the most recent Q-zip recorded in `history`: the inverse atomic operations in reverse order.
+\pre `!history.empty()`
 */
 template <typename PolygonMesh, typename VertexPointMap>
-void undo_qzip(Qzip_undo_record<PolygonMesh, VertexPointMap>& record)
+void undo_qzip(Qzip_history<PolygonMesh, VertexPointMap>& history)
 {
-  record.undo();
+  history.undo_last();
 }
 
 /*!

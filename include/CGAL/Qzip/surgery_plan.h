@@ -183,23 +183,25 @@ plan_qzip(const PolygonMesh& pm,
   plan.operations[0] = initial_operation;
   internal::transport_compass(plan.path, plan.operations, 1, pm);
 
-  // Start first: a v3 start with a collapse re-routes the first edges (n, d, v1), and the compass is
-  // transported again from v1 on the new incoming edge, which matters when v1 is irregular. Then the
-  // end, with the tag that reaches it. On a one-edge path the end rule may turn the start tag into a
-  // split (v5 end with a collapse), and the start rule for splits applies then.
+  // Start first: a v3 start with a collapse re-routes the first edges (n, d, v1), which may fold back
+  // (d -> v1 -> d when the sketch turns towards the collapse); folds are removed and the compass is
+  // transported again after them, on the new incoming edges (this matters where a vertex is irregular).
+  // Then the end, with the tag that reaches it. On a one-edge path the end rule may turn the start tag
+  // into a split (v5 end with a collapse), and the start rule for splits applies then.
   internal::Endpoint_preparation<PolygonMesh> prep(pm);
   auto transport = [&pm](vertex_descriptor u, vertex_descriptor v, vertex_descriptor w, Strip_operation prev)
   { return rotate(prev, int(internal::compass_turn(u, v, w, prev, pm))); };
-  std::size_t retransport_from = 0;
+  std::size_t retransport_from = 0, first_fold = 0;
   Plan_status st = prep.prepare_start(plan.path, plan.operations, retransport_from);
+  if(st == Plan_status::REALIZABLE) st = prep.remove_folds(plan.path, plan.operations, first_fold);
   if(st == Plan_status::REALIZABLE && retransport_from > 0)
-    internal::transport_compass(plan.path, plan.operations, retransport_from, pm);
+    internal::transport_compass(plan.path, plan.operations, (std::min)(retransport_from, first_fold + 1), pm);
   const Strip_operation start_tag = plan.operations[0];
   if(st == Plan_status::REALIZABLE) st = prep.prepare_end(plan.path, plan.operations, initial_operation, transport);
   if(st == Plan_status::REALIZABLE && plan.path[0] == plan.source && plan.operations[0] != start_tag &&
      is_split(plan.operations[0]))
     st = prep.prepare_start(plan.path, plan.operations, retransport_from);
-  if(st == Plan_status::REALIZABLE) st = prep.remove_folds(plan.path, plan.operations);
+  if(st == Plan_status::REALIZABLE) st = prep.remove_folds(plan.path, plan.operations, first_fold);
   if(st == Plan_status::REALIZABLE && !internal::is_simple_edge_path(plan.path, pm))
     st = Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT;
   if(st != Plan_status::REALIZABLE) { plan.status = st; return plan; }

@@ -159,11 +159,13 @@ bool all_faces_have_degree(const Mesh& m, std::size_t d)
 }
 
 /// A canonical code of the oriented combinatorial map seen from halfedge `start`: a breadth-first
-/// numbering over next/opposite, and for each numbered halfedge the numbers of its next and opposite.
-/// Two meshes are isomorphic (orientation-preserving, face/edge/vertex incidences) iff the code from some
-/// start of one equals the code from a fixed start of the other.
+/// numbering over next/opposite, and for each numbered halfedge the numbers of its next and opposite and
+/// its border flag. Two meshes are isomorphic (orientation-preserving, all incidences) iff the code from
+/// some start of one equals the code from a fixed start of the other. With `reference`, the walk stops at
+/// the first difference and returns a truncated code.
 template <typename Mesh>
-std::vector<long> canonical_code(const Mesh& m, typename boost::graph_traits<Mesh>::halfedge_descriptor start)
+std::vector<long> canonical_code(const Mesh& m, typename boost::graph_traits<Mesh>::halfedge_descriptor start,
+                                 const std::vector<long>* reference = nullptr)
 {
   typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
   std::unordered_map<halfedge_descriptor, long, boost::hash<halfedge_descriptor> > id;
@@ -171,7 +173,8 @@ std::vector<long> canonical_code(const Mesh& m, typename boost::graph_traits<Mes
   id.reserve(halfedges(m).size() * 2);
   id[start] = 0; order.push_back(start);
   std::vector<long> code;
-  code.reserve(order.size() * 3);
+  code.reserve(halfedges(m).size() * 3);
+  auto push = [&](long x) { code.push_back(x); return reference == nullptr || (*reference)[code.size() - 1] == x; };
   for(std::size_t i = 0; i < order.size(); ++i)
   {
     const halfedge_descriptor h = order[i];
@@ -183,9 +186,9 @@ std::vector<long> canonical_code(const Mesh& m, typename boost::graph_traits<Mes
         it = id.emplace(n, long(order.size())).first;
         order.push_back(n);
       }
-      code.push_back(it->second);
+      if(!push(it->second)) return code;
     }
-    code.push_back(is_border(h, m) ? 1 : 0);
+    if(!push(is_border(h, m) ? 1 : 0)) return code;
   }
   return code;
 }
@@ -208,15 +211,17 @@ bool are_isomorphic(const MeshA& a, const MeshB& b)
   if(valence_histogram(a) != valence_histogram(b)) return false;
   if(halfedges(a).size() == 0) return true;
   // choose the rarest signature to limit the candidate starts in b
-  std::map<long, int> count_a;
+  std::map<long, int> count_a, count_b;
   for(auto h : halfedges(a)) ++count_a[halfedge_signature(h, a)];
+  for(auto h : halfedges(b)) ++count_b[halfedge_signature(h, b)];
+  if(count_a != count_b) return false;
   long best = count_a.begin()->first;
   for(const auto& kv : count_a) if(kv.second < count_a[best]) best = kv.first;
   typename boost::graph_traits<MeshA>::halfedge_descriptor ha = *halfedges(a).begin();
   for(auto h : halfedges(a)) if(halfedge_signature(h, a) == best) { ha = h; break; }
   const std::vector<long> code_a = canonical_code(a, ha);
   for(auto hb : halfedges(b))
-    if(halfedge_signature(hb, b) == best && canonical_code(b, hb) == code_a)
+    if(halfedge_signature(hb, b) == best && canonical_code(b, hb, &code_a) == code_a)
       return true;
   return false;
 }

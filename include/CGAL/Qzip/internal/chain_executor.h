@@ -95,6 +95,7 @@ public:
     if(!plan.is_realizable()) return r;
     const Point source_at = get(log_vpm(), plan.source), target_at = get(log_vpm(), plan.target);
     visitor.on_qzip_started(plan);
+    log.mark();
     const bool chain_ok = run_chain(plan);
     const bool clean_ok = chain_ok && clean_up();
     const bool valences_ok = clean_ok && valences_preserved();
@@ -107,7 +108,7 @@ public:
 #endif
     if(!valences_ok)
     {
-      log.rollback();
+      log.rollback_to_mark();
       r.status = Plan_status::EXECUTION_FAILED;
       visitor.on_qzip_finished(plan, false);
       return r;
@@ -192,17 +193,25 @@ private:
       const auto vw = halfedge(plan.path[j], plan.path[j + 1], pm);
       if(!vw.second) return false;
       const halfedge_descriptor o = vw.first;
+      // a collapse may not remove a vertex the path has still to visit (e.g. on a cube, where the path
+      // can run along two sides of the collapsed quad): its descriptor would dangle
+      auto removes_path_vertex = [&](halfedge_descriptor h)
+      {
+        const vertex_descriptor c = target(next(next(h, pm), pm), pm);
+        return std::find(plan.path.begin() + std::ptrdiff_t(j + 1), plan.path.end(), c) != plan.path.end();
+      };
       switch(plan.operations[j])
       {
         case Strip_operation::NO_OPERATION:
           guide = opposite(o, pm);
           break;
         case Strip_operation::RIGHT_COLLAPSE:
-          if(!collapse(o)) return false;
+          if(is_border(o, pm) || removes_path_vertex(o) || !collapse(o)) return false;
           guide = opposite(last_delimiters.first, pm);
           break;
         case Strip_operation::LEFT_COLLAPSE:
-          if(is_border(opposite(o, pm), pm) || !collapse(prev(opposite(o, pm), pm))) return false;
+          if(is_border(opposite(o, pm), pm) || removes_path_vertex(prev(opposite(o, pm), pm)) ||
+             !collapse(prev(opposite(o, pm), pm))) return false;
           guide = opposite(last_delimiters.second, pm);
           break;
         case Strip_operation::LEFT_SPLIT:

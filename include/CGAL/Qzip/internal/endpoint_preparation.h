@@ -76,7 +76,8 @@ public:
       case Strip_operation::RIGHT_COLLAPSE:
       {
         const bool left = last == Strip_operation::LEFT_COLLAPSE;
-        if(left ? is_border(ut, pm) : is_border(opposite(ut, pm), pm)) return Plan_status::BORDER_OR_CONSTRAINED;
+        const halfedge_descriptor side = left ? ut : opposite(ut, pm);
+        if(is_border(side, pm) || !is_quad(side, pm)) return Plan_status::BORDER_OR_CONSTRAINED;
         // LC: face(u->t) = (u, t, x, n); RC: face(t->u) = (t, u, n, x)
         const halfedge_descriptor h = left ? next(ut, pm) : next(opposite(ut, pm), pm);
         const vertex_descriptor x = left ? target(h, pm) : target(next(h, pm), pm);
@@ -109,7 +110,8 @@ public:
     {
       if(is_split(first)) { ops[0] = Strip_operation::NO_OPERATION; return Plan_status::REALIZABLE; }
       const bool left = first == Strip_operation::LEFT_COLLAPSE;
-      if(left ? is_border(sv, pm) : is_border(opposite(sv, pm), pm)) return Plan_status::BORDER_OR_CONSTRAINED;
+      const halfedge_descriptor side = left ? sv : opposite(sv, pm);
+      if(is_border(side, pm) || !is_quad(side, pm)) return Plan_status::BORDER_OR_CONSTRAINED;
       // LC: face(s->v1) = (s, v1, d, n); RC: face(v1->s) = (v1, s, n, d)
       const halfedge_descriptor h = left ? next(sv, pm) : next(opposite(sv, pm), pm);
       const vertex_descriptor d = left ? target(h, pm) : target(next(h, pm), pm);
@@ -134,14 +136,17 @@ public:
   }
 
   // removes folds a -> b -> a; the compass at a keeps its orientation, so its tag rotates by the
-  // number of counterclockwise steps from a->b to the new next edge. a must be regular.
-  Plan_status remove_folds(Path& path, Operations& ops) const
+  // number of counterclockwise steps from a->b to the new next edge. a must be regular. `first_fold`
+  // is set to the index of the first a (path.size() when there is no fold).
+  Plan_status remove_folds(Path& path, Operations& ops, std::size_t& first_fold) const
   {
+    first_fold = path.size();
     for(std::size_t j = 0; j + 2 < path.size();)
     {
       if(path[j] != path[j + 2]) { ++j; continue; }
       const vertex_descriptor a = path[j], b = path[j + 1];
       if(valence(a, pm) != 4 || ops[j] == Strip_operation::NO_OPERATION) return Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT;
+      first_fold = (std::min)(first_fold, j);
       path.erase(path.begin() + long(j) + 1, path.begin() + long(j) + 3);
       ops.erase(ops.begin() + long(j) + 1, ops.begin() + long(j) + 3);
       if(j + 1 < path.size())

@@ -12,25 +12,25 @@
 
 #include <CGAL/Qzip/quad_operations.h>
 
+#include <boost/functional/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
-#include <map>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
 namespace Qzip {
 namespace internal {
 
-// The atomic operations of one Q-zip, applied through this log so that they can be rolled back exactly
-// (connectivity and positions) in reverse order, without any copy of the mesh.
+// A journal of atomic operations that can be rolled back exactly (connectivity and positions), most
+// recent first, without any copy of the mesh.
 //
-// Rolling back a collapse re-creates the removed vertex, face and edges under new descriptors; older
-// entries may still name the removed ones, so the re-created elements are recorded in a map from the
-// descriptor an entry knew to the live one. Lookups are single-step: an entry's descriptors denote
-// elements alive when the entry was written, and whenever an element is re-created the map entry of
-// its old descriptor is overwritten, so a lookup always yields the element the entry meant even when
-// descriptors are recycled by the mesh.
+// Rolling back a collapse re-creates the removed vertex and edges under new descriptors, and meshes
+// recycle the descriptors of removed elements, so entries cannot name elements by descriptor. They name
+// them by entity ids instead: an id is bound to a descriptor when an element is first named, unbound when
+// the element is removed, and bound to the new descriptor when a rollback re-creates the element. An id
+// therefore always denotes the same element, whatever descriptors it had over time.
 template <typename PolygonMesh, typename VertexPointMap>
 class Operation_log
 {
@@ -41,48 +41,90 @@ public:
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
 
 private:
+  typedef std::size_t Id;
+
+  template <typename Descriptor>
+  struct Binding
+  {
+    std::unordered_map<Descriptor, Id, boost::hash<Descriptor> > id;
+    std::unordered_map<Id, Descriptor> descriptor;
+    Id next_id = 0;
+
+    Id name(Descriptor d)
+    {
+      auto it = id.find(d);
+      if(it != id.end()) return it->second;
+      id.emplace(d, next_id);
+      descriptor.emplace(next_id, d);
+      return next_id++;
+    }
+    Descriptor operator[](Id i) const { return descriptor.at(i); }
+    void unbind(Descriptor d)
+    {
+      auto it = id.find(d);
+      if(it == id.end()) return;
+      descriptor.erase(it->second);
+      id.erase(it);
+    }
+    void rebind(Id i, Descriptor d)
+    {
+      id[d] = i;
+      descriptor[i] = d;
+    }
+    void clear() { id.clear(); descriptor.clear(); }
+  };
+
   struct Entry
   {
     bool collapse;
-    // collapse: the returned delimiters; split: the returned halfedge (first) of the new quad
-    halfedge_descriptor first, second;
-    // collapse: the removed vertex and the halfedges b->c, c->d and their opposites; split: the new vertex
-    vertex_descriptor removed_vertex;
-    halfedge_descriptor removed_bc, removed_cd, removed_cb, removed_dc;
-    // positions before the operation: the kept/split vertex and the removed vertex
-    vertex_descriptor moved;
+    // collapse: the returned delimiters b->a and d->a; split: the returned halfedge d->v of the new quad
+    Id first, second;
+    // collapse: the removed vertex c and halfedges b->c, c->d, c->b, d->c
+    Id removed_vertex;
+    Id removed[4];
+    // the kept (collapse) or split vertex, with its position before; the removed vertex's position
+    Id moved;
     Point moved_from, removed_at;
   };
 
   PolygonMesh& pm;
   VertexPointMap vpm;
   std::vector<Entry> entries;
+  std::vector<std::size_t> marks;
+  Binding<halfedge_descriptor> halfedge_ids;
+  Binding<vertex_descriptor> vertex_ids;
 
 public:
   Operation_log(PolygonMesh& pm, VertexPointMap vpm) : pm(pm), vpm(vpm) {}
 
   VertexPointMap vertex_point_map() const { return vpm; }
-  std::size_t size() const { return entries.size(); }
   bool empty() const { return entries.empty(); }
-  void clear() { entries.clear(); }
+  std::size_t number_of_marks() const { return marks.size(); }
+
+  // starts a group of operations that `rollback_to_mark()` undoes as a whole
+  void mark() { marks.push_back(entries.size()); }
+  // forgets the last mark, keeping its operations in the previous group
+  void drop_mark() { marks.pop_back(); }
 
   // collapses face(h), keeping target(h), and puts the kept vertex at the midpoint of the two merged ones.
   Split_delimiters<PolygonMesh> collapse(halfedge_descriptor h)
   {
     Entry e;
     e.collapse = true;
-    e.removed_bc = next(next(h, pm), pm);
-    e.removed_cd = next(e.removed_bc, pm);
-    e.removed_cb = opposite(e.removed_bc, pm);
-    e.removed_dc = opposite(e.removed_cd, pm);
-    e.removed_vertex = target(e.removed_bc, pm);
-    e.moved = target(h, pm);
-    e.moved_from = get(vpm, e.moved);
-    e.removed_at = get(vpm, e.removed_vertex);
+    const halfedge_descriptor bc = next(next(h, pm), pm), cd = next(bc, pm);
+    const halfedge_descriptor removed[4] = { bc, cd, opposite(bc, pm), opposite(cd, pm) };
+    const vertex_descriptor a = target(h, pm), c = target(bc, pm);
+    for(int i = 0; i < 4; ++i) e.removed[i] = halfedge_ids.name(removed[i]);
+    e.removed_vertex = vertex_ids.name(c);
+    e.moved = vertex_ids.name(a);
+    e.moved_from = get(vpm, a);
+    e.removed_at = get(vpm, c);
     const Split_delimiters<PolygonMesh> d = quad_collapse(h, pm);
-    e.first = d.first;
-    e.second = d.second;
-    put(vpm, e.moved, CGAL::midpoint(e.moved_from, e.removed_at));
+    for(int i = 0; i < 4; ++i) halfedge_ids.unbind(removed[i]);
+    vertex_ids.unbind(c);
+    e.first = halfedge_ids.name(d.first);
+    e.second = halfedge_ids.name(d.second);
+    put(vpm, a, CGAL::midpoint(e.moved_from, e.removed_at));
     entries.push_back(e);
     return d;
   }
@@ -93,51 +135,56 @@ public:
   {
     Entry e;
     e.collapse = false;
-    e.moved = target(h1, pm);
-    e.moved_from = get(vpm, e.moved);
+    const vertex_descriptor v = target(h1, pm);
+    e.moved = vertex_ids.name(v);
+    e.moved_from = get(vpm, v);
     const halfedge_descriptor q = split_vertex_into_quad(h1, h2, pm);
-    e.first = q;
-    e.removed_vertex = target(next(next(q, pm), pm), pm); // the new vertex
-    put(vpm, e.removed_vertex, e.moved_from);
-    relax(e.removed_vertex, e.moved_from);
-    relax(e.moved, e.moved_from);
+    e.first = halfedge_ids.name(q);
+    const vertex_descriptor c = target(next(next(q, pm), pm), pm);
+    relax(c, e.moved_from);
+    relax(v, e.moved_from);
     entries.push_back(e);
     return q;
   }
 
-  // undoes every logged operation, most recent first, restoring connectivity and positions.
-  void rollback()
+  // undoes the operations since the last mark, most recent first, and removes the mark.
+  void rollback_to_mark()
   {
-    std::map<vertex_descriptor, vertex_descriptor> vmap;
-    std::map<halfedge_descriptor, halfedge_descriptor> hmap;
-    auto rv = [&vmap](vertex_descriptor v) { auto it = vmap.find(v); return it == vmap.end() ? v : it->second; };
-    auto rh = [&hmap](halfedge_descriptor h) { auto it = hmap.find(h); return it == hmap.end() ? h : it->second; };
-    for(auto it = entries.rbegin(); it != entries.rend(); ++it)
+    const std::size_t keep = marks.empty() ? 0 : marks.back();
+    if(!marks.empty()) marks.pop_back();
+    while(entries.size() > keep)
     {
-      const Entry& e = *it;
-      if(e.collapse)
-      {
-        const halfedge_descriptor q = split_vertex_into_quad(rh(e.first), rh(e.second), pm);
-        const halfedge_descriptor bc = next(next(q, pm), pm), cd = next(bc, pm);
-        const vertex_descriptor c = target(bc, pm);
-        vmap[e.removed_vertex] = c;
-        hmap[e.removed_bc] = bc;
-        hmap[e.removed_cd] = cd;
-        hmap[e.removed_cb] = opposite(bc, pm);
-        hmap[e.removed_dc] = opposite(cd, pm);
-        put(vpm, c, e.removed_at);
-        put(vpm, rv(e.moved), e.moved_from);
-      }
-      else
-      {
-        quad_collapse(rh(e.first), pm);
-        put(vpm, rv(e.moved), e.moved_from);
-      }
+      undo(entries.back());
+      entries.pop_back();
     }
-    entries.clear();
+    if(entries.empty()) { halfedge_ids.clear(); vertex_ids.clear(); }
   }
 
 private:
+  void undo(const Entry& e)
+  {
+    if(e.collapse)
+    {
+      const halfedge_descriptor q = split_vertex_into_quad(halfedge_ids[e.first], halfedge_ids[e.second], pm);
+      const halfedge_descriptor bc = next(next(q, pm), pm), cd = next(bc, pm);
+      const halfedge_descriptor recreated[4] = { bc, cd, opposite(bc, pm), opposite(cd, pm) };
+      for(int i = 0; i < 4; ++i) halfedge_ids.rebind(e.removed[i], recreated[i]);
+      const vertex_descriptor c = target(bc, pm);
+      vertex_ids.rebind(e.removed_vertex, c);
+      put(vpm, c, e.removed_at);
+    }
+    else
+    {
+      const halfedge_descriptor q = halfedge_ids[e.first];
+      const halfedge_descriptor bc = next(next(q, pm), pm), cd = next(bc, pm);
+      const vertex_descriptor c = target(bc, pm);
+      for(halfedge_descriptor h : { bc, cd, opposite(bc, pm), opposite(cd, pm) }) halfedge_ids.unbind(h);
+      vertex_ids.unbind(c);
+      quad_collapse(q, pm);
+    }
+    put(vpm, vertex_ids[e.moved], e.moved_from);
+  }
+
   void relax(vertex_descriptor v, const Point& from)
   {
     double x = 0, y = 0, z = 0, n = 0;

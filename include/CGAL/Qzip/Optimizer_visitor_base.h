@@ -1,0 +1,46 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_OPTIMIZER_VISITOR_BASE_H
+#define CGAL_QZIP_OPTIMIZER_VISITOR_BASE_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/Qzip/stop_predicates.h>
+
+namespace CGAL {
+namespace Qzip {
+
+template <typename PolygonMesh> struct Surgery_plan;
+
+/*!
+\ingroup PkgQzipOptimizer
+A visitor of `optimize_singularities()` with no-op callbacks: derive from it, override what you need
+and pass it with the named parameter `visitor` (by `std::ref` to keep its state). It is not forwarded
+to the Q-zip primitive.
+*/
+template <typename PolygonMesh>
+struct Default_optimizer_visitor
+{
+  /// called once before the first batch.
+  void on_started(const Optimizer_statistics&) {}
+  /// called after the candidates of a batch are scored, with the number of candidates to execute.
+  void on_batch_scored(const Optimizer_statistics&, std::size_t /*number_of_chosen_candidates*/) {}
+  /// called after each executed surgery that was kept, with its score change (negative: better).
+  void on_surgery(const Surgery_plan<PolygonMesh>&, double /*score*/) {}
+  /// called after a surgery was executed and then undone because no valid quad shape was found.
+  void on_undo(const Surgery_plan<PolygonMesh>&) {}
+  /// called after each batch (and its smoothing): `s.batch`, `s.number_of_singularities`, `s.elapsed_seconds`.
+  void on_batch_finished(const Optimizer_statistics&) {}
+  /// called once at the end.
+  void on_finished(const Optimizer_statistics&) {}
+};
+
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_OPTIMIZER_VISITOR_BASE_H

@@ -1,0 +1,68 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_SCORING_DEFAULT_SCORING_H
+#define CGAL_QZIP_SCORING_DEFAULT_SCORING_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/Qzip/Scoring/Qzip_candidate.h>
+#include <CGAL/Qzip/Scoring/Scoring_context.h>
+#include <CGAL/Qzip/Scoring/Electric_term.h>
+#include <CGAL/Qzip/Scoring/Isotropy_term.h>
+#include <CGAL/Qzip/Scoring/Sizing_term.h>
+#include <CGAL/Qzip/Scoring/Separatrix_term.h>
+
+namespace CGAL {
+namespace Qzip {
+
+/*!
+\ingroup PkgQzipOptimizer
+\cgalModels `QzipScoringFunctor`
+
+The default scoring of `optimize_singularities()`: the weighted sum of the paper's four terms (Sec. 4.1),
+`Electric_term`, `Isotropy_term`, `Sizing_term` and `Separatrix_term`.
+
+<b>The concept `QzipScoringFunctor`.</b> A scoring functor is a copyable function object with
+\code
+template <typename PolygonMesh, typename Context>
+double operator()(const Qzip_candidate<PolygonMesh>& candidate, Context& context) const;
+\endcode
+returning the change of the mesh score the candidate surgery would bring: negative is an improvement.
+For each picked singularity the optimizer keeps the candidate with the lowest value among those with a
+negative value. `Context` is a `Scoring_context`: it answers questions about the mesh as it was at the
+start of the batch (defects, closest singularities, graph distances, separatrices, areas). The functor
+must not edit the mesh. A user functor can replace this one or extend it by calling it
+(`return Default_scoring()(c, ctx) + my_term(c, ctx);`); pass it with the named parameter `scoring_functor`.
+*/
+struct Default_scoring
+{
+  double electric_weight = 1.;    ///< weight of `Electric_term`
+  double isotropy_weight = 0.1;   ///< weight of `Isotropy_term`
+  double sizing_weight = 0.1;     ///< weight of `Sizing_term`
+  double separatrix_weight = 0.1; ///< weight of `Separatrix_term`
+  Electric_term electric;         ///< the electric term and its parameters
+  Isotropy_term isotropy;         ///< the isotropy term
+  Sizing_term sizing;             ///< the sizing term
+  Separatrix_term separatrix;     ///< the separatrix term and its parameters
+
+  template <typename PolygonMesh, typename Context>
+  double operator()(const Qzip_candidate<PolygonMesh>& c, Context& ctx) const
+  {
+    double s = 0;
+    if(electric_weight != 0) s += electric_weight * electric(c, ctx);
+    if(isotropy_weight != 0) s += isotropy_weight * isotropy(c, ctx);
+    if(sizing_weight != 0) s += sizing_weight * sizing(c, ctx);
+    if(separatrix_weight != 0) s += separatrix_weight * separatrix(c, ctx);
+    return s;
+  }
+};
+
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_SCORING_DEFAULT_SCORING_H

@@ -1,0 +1,78 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_SCORING_ISOTROPY_TERM_H
+#define CGAL_QZIP_SCORING_ISOTROPY_TERM_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/Qzip/Scoring/Qzip_candidate.h>
+
+#include <cmath>
+
+namespace CGAL {
+namespace Qzip {
+
+namespace internal {
+
+// calls f(op, face, along, across) for each operation of the plan that acts on a quad next to the path:
+// the quad on the left of the path edge for RC and LS, on its right for LC and RS; `along` is the length
+// of the path edge and `across` the mean length of the two sides of the quad that leave the path.
+template <typename PolygonMesh, typename Context, typename F>
+void for_each_strip_quad(const Surgery_plan<PolygonMesh>& plan, const Context& ctx, F f)
+{
+  const PolygonMesh& pm = ctx.mesh();
+  for(std::size_t j = 0; j + 1 < plan.path.size(); ++j)
+  {
+    const Strip_operation op = plan.operations[j];
+    if(op == Strip_operation::NO_OPERATION) continue;
+    const auto vw = halfedge(plan.path[j], plan.path[j + 1], pm);
+    if(!vw.second) continue;
+    const bool left = op == Strip_operation::RIGHT_COLLAPSE || op == Strip_operation::LEFT_SPLIT;
+    const auto h = left ? vw.first : opposite(vw.first, pm);
+    if(is_border(h, pm) || !is_quad(h, pm)) continue;
+    const auto n = next(h, pm), p = prev(h, pm);
+    const double along = ctx.length(source(h, pm), target(h, pm));
+    const double across = 0.5 * (ctx.length(source(n, pm), target(n, pm)) + ctx.length(source(p, pm), target(p, pm)));
+    if(!(along > 0) || !(across > 0)) continue;
+    f(op, face(h, pm), along, across);
+  }
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgQzipOptimizer
+\cgalModels `QzipScoringFunctor`
+
+The isotropy control of the paper's Sec. 4.1. A chain of collapses removes the strip of quads along
+one side of the path, which widens the remaining quads across the path; a chain of splits inserts a
+strip, which narrows them. For each operation, with `along` the length of the path edge and `across`
+the length of the quad's sides that leave the path, the term adds `log(across / along)` for a collapse
+(negative, i.e. good, when the quads are squeezed across the path) and `-log(across / along)` for a
+split (good when they are stretched across it). Only the plan is used.
+*/
+struct Isotropy_term
+{
+  template <typename PolygonMesh, typename Context>
+  double operator()(const Qzip_candidate<PolygonMesh>& c, Context& ctx) const
+  {
+    double s = 0;
+    internal::for_each_strip_quad(*c.plan, ctx, [&](Strip_operation op, typename boost::graph_traits<PolygonMesh>::face_descriptor,
+                                                    double along, double across)
+    {
+      const double r = std::log(across / along);
+      s += is_collapse(op) ? r : -r;
+    });
+    return s;
+  }
+};
+
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_SCORING_ISOTROPY_TERM_H

@@ -1,0 +1,443 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_INTERNAL_OPTIMIZER_BATCH_OPTIMIZER_H
+#define CGAL_QZIP_INTERNAL_OPTIMIZER_BATCH_OPTIMIZER_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/Qzip/qzip.h>
+#include <CGAL/Qzip/quad_quality.h>
+#include <CGAL/Qzip/smoothing.h>
+#include <CGAL/Qzip/stop_predicates.h>
+#include <CGAL/Qzip/Optimizer_visitor_base.h>
+#include <CGAL/Qzip/Scoring/Qzip_candidate.h>
+#include <CGAL/Qzip/Scoring/Scoring_context.h>
+
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/Random.h>
+#include <CGAL/Real_timer.h>
+
+#include <boost/functional/hash.hpp>
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Qzip {
+namespace internal {
+
+struct Optimizer_settings
+{
+  bool smooth = true;
+  int smoothing_iterations = 5;
+  double face_count_tolerance = 0.1;
+  unsigned int seed = 0;
+  std::size_t neighbors_per_type = 3;
+};
+
+// The multiple-choice batches of the paper's Sec. 4.1 (see optimize_singularities()).
+template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap, typename FaceIsConstrainedMap,
+          typename GeomTraits, typename Scoring, typename StopPredicate, typename Visitor>
+class Batch_optimizer
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+  typedef Scoring_context<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap> Context;
+  typedef Quad_smoother<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap, GeomTraits> Smoother;
+  typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<unsigned int> >::type Stamp_map;
+  typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<vertex_descriptor> >::type Vertex_map;
+
+  struct Scored
+  {
+    Surgery_plan<PolygonMesh> plan;
+    double score;
+    Point source_point;
+    int predicted_cancellations;
+  };
+
+  PolygonMesh& pm;
+  VertexPointMap vpm;
+  EdgeIsConstrainedMap ecm;
+  FaceIsConstrainedMap fcm;
+  const Scoring& scoring;
+  const StopPredicate& stop;
+  Visitor& visitor;
+  Optimizer_settings settings;
+
+  Context ctx;
+  Smoother smoother;
+  CGAL::Random rng;
+  Optimizer_statistics stats;
+  CGAL::Real_timer timer;
+
+  Stamp_map search_stamp, op_stamp, scar_stamp;
+  Vertex_map search_pred;
+  unsigned int search_epoch = 0, batch_epoch = 0;
+  std::vector<vertex_descriptor> queue;
+  std::vector<vertex_descriptor> singular;
+
+public:
+  Batch_optimizer(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
+                  const Scoring& scoring, const StopPredicate& stop, Visitor& visitor, const Optimizer_settings& settings)
+    : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm), scoring(scoring), stop(stop), visitor(visitor), settings(settings),
+      ctx(pm, vpm, ecm, fcm), smoother(pm, vpm, ecm, fcm, settings.smooth), rng(settings.seed),
+      search_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
+      op_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
+      scar_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
+      search_pred(get(CGAL::dynamic_vertex_property_t<vertex_descriptor>(), pm))
+  {
+    for(vertex_descriptor v : vertices(pm))
+    {
+      put(search_stamp, v, 0u);
+      put(op_stamp, v, 0u);
+      put(scar_stamp, v, 0u);
+    }
+  }
+
+  Optimizer_statistics run()
+  {
+    timer.start();
+    singular = ctx.begin_batch();
+    stats.initial_number_of_singularities = stats.number_of_singularities = singular.size();
+    stats.initial_number_of_faces = stats.number_of_faces = faces(pm).size();
+    visitor.on_started(stats);
+    while(!stop(stats))
+      run_batch();
+    stats.elapsed_seconds = timer.time();
+    visitor.on_finished(stats);
+    return stats;
+  }
+
+private:
+  // ---------------------------------------------------------------------------------------------
+  // helpers
+
+  static bool point_less(const Point& a, const Point& b)
+  {
+    if(a.x() != b.x()) return a.x() < b.x();
+    if(a.y() != b.y()) return a.y() < b.y();
+    return a.z() < b.z();
+  }
+
+  void sort_by_position(std::vector<vertex_descriptor>& vs) const
+  {
+    std::vector<std::pair<Point, vertex_descriptor> > keyed;
+    keyed.reserve(vs.size());
+    for(vertex_descriptor v : vs) keyed.emplace_back(get(vpm, v), v);
+    std::sort(keyed.begin(), keyed.end(), [](const std::pair<Point, vertex_descriptor>& a,
+                                              const std::pair<Point, vertex_descriptor>& b)
+              { return point_less(a.first, b.first); });
+    for(std::size_t i = 0; i < vs.size(); ++i) vs[i] = keyed[i].second;
+  }
+
+  // a surgery path may pass through v: interior, no constrained edge, no protected face
+  bool is_passable(vertex_descriptor v) const
+  {
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) return false;
+      if(!is_border(h, pm) && get(fcm, face(h, pm))) return false;
+    }
+    return true;
+  }
+
+  bool is_endpoint(vertex_descriptor v) const
+  {
+    const std::size_t d = valence(v, pm);
+    return (d == 3 || d == 5) && is_passable(v);
+  }
+
+  // vertices within `radius` edges of `seeds` (seeds first)
+  std::vector<vertex_descriptor> ball(const std::vector<vertex_descriptor>& seeds, int radius)
+  {
+    ++search_epoch;
+    std::vector<vertex_descriptor> out;
+    std::vector<int> level;
+    for(vertex_descriptor v : seeds)
+      if(get(search_stamp, v) != search_epoch) { put(search_stamp, v, search_epoch); out.push_back(v); level.push_back(0); }
+    for(std::size_t i = 0; i < out.size(); ++i)
+    {
+      if(level[i] >= radius) continue;
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(out[i], pm), pm))
+      {
+        const vertex_descriptor w = source(h, pm);
+        if(get(search_stamp, w) == search_epoch) continue;
+        put(search_stamp, w, search_epoch);
+        out.push_back(w);
+        level.push_back(level[i] + 1);
+      }
+    }
+    return out;
+  }
+
+  void mark(const std::vector<vertex_descriptor>& region)
+  {
+    for(vertex_descriptor v : region) put(op_stamp, v, batch_epoch);
+  }
+
+  std::size_t count_inverted(const std::vector<vertex_descriptor>& region) const
+  {
+    std::unordered_set<face_descriptor, boost::hash<face_descriptor> > seen;
+    std::size_t n = 0;
+    for(vertex_descriptor v : region)
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      {
+        if(is_border(h, pm) || !is_quad(h, pm)) continue;
+        const face_descriptor f = face(h, pm);
+        if(!seen.insert(f).second) continue;
+        if(quad_scaled_jacobian(f, pm, CGAL::parameters::vertex_point_map(vpm)) <= 0) ++n;
+      }
+    return n;
+  }
+
+  std::size_t count_singularities_now() const
+  {
+    std::size_t n = 0;
+    for(vertex_descriptor v : vertices(pm))
+    {
+      if(halfedge(v, pm) == GT::null_halfedge()) continue;
+      if(ctx.is_border_or_feature(v))
+      { if(vertex_defect_info(v, pm, vpm, ecm, GeomTraits()).defect != 0) ++n; }
+      else if(valence(v, pm) != 4) ++n;
+    }
+    return n;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // candidates
+
+  // breadth-first search from s through passable vertices: the closest singularities of each type
+  // that can end a surgery (`neighbors_per_type` of each), and the border/feature singularities met before.
+  std::vector<std::vector<vertex_descriptor> > partner_paths(vertex_descriptor s)
+  {
+    ++search_epoch;
+    queue.clear();
+    queue.push_back(s);
+    put(search_stamp, s, search_epoch);
+    put(search_pred, s, s);
+    std::size_t n3 = 0, n5 = 0, others = 0;
+    const std::size_t k = settings.neighbors_per_type;
+    std::vector<vertex_descriptor> partners;
+    for(std::size_t i = 0; i < queue.size(); ++i)
+    {
+      const vertex_descriptor v = queue[i];
+      bool expand = (v == s);
+      if(v != s)
+      {
+        const int d = ctx.defect(v);
+        const bool passable = is_passable(v);
+        expand = passable;
+        if(d != 0)
+        {
+          const std::size_t dv = valence(v, pm);
+          const bool usable = passable && (dv == 3 || dv == 5);
+          if(usable && d < 0 && n3 < k) { ++n3; partners.push_back(v); }
+          else if(usable && d > 0 && n5 < k) { ++n5; partners.push_back(v); }
+          else if(!usable && others < 2 * k && ((d < 0 && n3 < k) || (d > 0 && n5 < k)))
+          { ++others; partners.push_back(v); } // boundary/feature defects: the primitive refuses them for now
+          if(n3 >= k && n5 >= k) break;
+        }
+      }
+      if(!expand) continue;
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      {
+        const vertex_descriptor w = source(h, pm);
+        if(get(search_stamp, w) == search_epoch) continue;
+        put(search_stamp, w, search_epoch);
+        put(search_pred, w, v);
+        queue.push_back(w);
+      }
+    }
+    std::vector<std::vector<vertex_descriptor> > paths;
+    for(vertex_descriptor t : partners)
+    {
+      std::vector<vertex_descriptor> path;
+      for(vertex_descriptor v = t; ; v = get(search_pred, v))
+      {
+        path.push_back(v);
+        if(v == s) break;
+      }
+      std::reverse(path.begin(), path.end());
+      paths.push_back(std::move(path));
+    }
+    return paths;
+  }
+
+  template <typename NP>
+  bool best_candidate(vertex_descriptor s, const NP& plan_np, Scored& best)
+  {
+    bool found = false;
+    const auto paths = partner_paths(s);
+    const long f0 = long(stats.initial_number_of_faces);
+    const long fnow = long(stats.number_of_faces);
+    const double tol = settings.face_count_tolerance * double(f0);
+    std::size_t longest = 0;
+    for(const auto& path : paths) longest = (std::max)(longest, path.size());
+    ctx.set_distance_radius_hint(int(longest) + 3);
+    for(const auto& path : paths)
+    {
+      const vertex_descriptor t = path.back();
+      for(int m = 0; m < 4; ++m)
+      {
+        Surgery_plan<PolygonMesh> plan = plan_qzip(pm, path, Strip_operation(m), plan_np);
+        if(!plan.is_realizable()) continue;
+        const long fafter = fnow + long(plan.number_of_splits()) - long(plan.number_of_collapses());
+        if(std::abs(double(fafter - f0)) > tol && std::abs(fafter - f0) > std::abs(fnow - f0)) continue;
+        Qzip_candidate<PolygonMesh> c;
+        c.plan = &plan;
+        c.source = s;
+        c.target = t;
+        c.source_defect = ctx.defect(s);
+        c.target_defect = ctx.defect(t);
+        c.sketch_length = int(path.size()) - 1;
+        predict_landings(plan, pm, c.source_landing, c.target_landing);
+        if(c.source_landing != GT::null_vertex() && c.source_landing != t && c.source_landing != s &&
+           ctx.defect(c.source_landing) * c.source_defect < 0) c.predicted_cancellations += 2;
+        if(c.target_landing != GT::null_vertex() && c.target_landing != s && c.target_landing != t &&
+           c.target_landing != c.source_landing && ctx.defect(c.target_landing) * c.target_defect < 0)
+          c.predicted_cancellations += 2;
+        const double score = scoring(c, ctx);
+        if(score < 0 && (!found || score < best.score))
+        {
+          found = true;
+          best.score = score;
+          best.predicted_cancellations = c.predicted_cancellations;
+          best.plan = std::move(plan);
+        }
+      }
+    }
+    ctx.clear_cache();
+    if(found) best.source_point = get(vpm, s);
+    return found;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // execution
+
+  template <typename NP>
+  void execute(const Scored& cand, const NP& exec_np, std::vector<vertex_descriptor>& /*unused*/)
+  {
+    const Surgery_plan<PolygonMesh>& plan = cand.plan;
+    // The region of the plan must not have been operated on in this batch. Only the path vertices are
+    // read before the check: a vertex removed by an earlier surgery of the batch lies within three edges
+    // of its path, which is marked, so no removed vertex is ever walked around. A path at four edges or
+    // more from the earlier paths has its one-ring (what its operations touch) disjoint from theirs.
+    for(vertex_descriptor v : plan.path)
+      if(get(op_stamp, v) == batch_epoch) { ++stats.number_of_skipped_surgeries; return; }
+    mark(ball(plan.path, 3));
+
+    const std::size_t inverted_before = count_inverted(ball(plan.path, 2));
+#ifdef CGAL_QZIP_OPTIMIZER_MEASURE_PREDICTIONS
+    const std::size_t singular_before = count_singularities_now();
+#endif
+    Qzip_history<PolygonMesh, VertexPointMap> history(pm, vpm); // this surgery only
+    Qzip_result<PolygonMesh> r = execute_qzip(pm, plan, history, exec_np);
+    if(!r.is_done()) { ++stats.number_of_failed_surgeries; mark(ball(plan.path, 3)); return; }
+
+    std::vector<vertex_descriptor> scar = ball(r.touched_vertices, 1);
+    sort_by_position(scar);
+    std::vector<Point> saved;
+    saved.reserve(scar.size());
+    for(vertex_descriptor v : scar) saved.push_back(get(vpm, v));
+    if(settings.smooth) smoother.smooth(scar, settings.smoothing_iterations);
+    if(count_inverted(scar) > inverted_before)
+    {
+      for(std::size_t i = 0; i < scar.size(); ++i) put(vpm, scar[i], saved[i]);
+      undo_qzip(history);
+      mark(ball(plan.path, 3)); // re-created vertices have new descriptors
+      ++stats.number_of_undone_surgeries;
+      visitor.on_undo(plan);
+      return;
+    }
+#ifdef CGAL_QZIP_OPTIMIZER_MEASURE_PREDICTIONS
+    if(singular_before - count_singularities_now() == std::size_t(cand.predicted_cancellations))
+      ++stats.number_of_exact_predictions;
+#endif
+    for(vertex_descriptor v : scar) put(scar_stamp, v, batch_epoch);
+    mark(ball(r.touched_vertices, 2)); // new vertices may reuse the descriptors of removed ones
+    stats.number_of_faces = stats.number_of_faces + r.number_of_splits - r.number_of_collapses;
+    ++stats.number_of_surgeries;
+    ++stats.surgeries_in_last_batch;
+    visitor.on_surgery(plan, cand.score);
+  }
+
+  void run_batch()
+  {
+    ++batch_epoch;
+    CGAL::Real_timer score_timer, exec_timer;
+    score_timer.start();
+    stats.surgeries_in_last_batch = 0;
+
+    // a random half of the singularities that can start a surgery, in an order that does not depend
+    // on descriptors
+    std::vector<vertex_descriptor> sources;
+    for(vertex_descriptor v : singular) if(is_endpoint(v)) sources.push_back(v);
+    sort_by_position(sources);
+    for(std::size_t i = sources.size(); i > 1; --i)
+      std::swap(sources[i - 1], sources[std::size_t(rng.get_int(0, int(i)))]);
+    sources.resize((sources.size() + 1) / 2);
+
+    const auto plan_np = Qzip::parameters::face_is_constrained_map(fcm,
+                           CGAL::parameters::edge_is_constrained_map(ecm).vertex_point_map(vpm));
+    std::vector<Scored> chosen;
+    for(vertex_descriptor s : sources)
+    {
+      Scored best;
+      if(best_candidate(s, plan_np, best)) chosen.push_back(std::move(best));
+    }
+    std::stable_sort(chosen.begin(), chosen.end(), [](const Scored& a, const Scored& b)
+    {
+      if(a.score != b.score) return a.score < b.score;
+      return point_less(a.source_point, b.source_point);
+    });
+    stats.candidates_in_last_batch = chosen.size();
+    chosen.resize((chosen.size() + 1) / 2);
+    score_timer.stop();
+    stats.scoring_seconds += score_timer.time();
+    visitor.on_batch_scored(stats, chosen.size());
+
+    exec_timer.start();
+    std::vector<vertex_descriptor> unused;
+    for(const Scored& c : chosen) execute(c, plan_np, unused);
+
+    // smoothing near all the scars of the batch
+    if(settings.smooth && stats.surgeries_in_last_batch > 0)
+    {
+      std::vector<vertex_descriptor> scars;
+      for(vertex_descriptor v : vertices(pm)) if(get(scar_stamp, v) == batch_epoch) scars.push_back(v);
+      sort_by_position(scars);
+      smoother.smooth(scars, settings.smoothing_iterations);
+    }
+    exec_timer.stop();
+    stats.execution_seconds += exec_timer.time();
+
+    singular = ctx.begin_batch();
+    const std::size_t before = stats.number_of_singularities;
+    stats.number_of_singularities = singular.size();
+    stats.number_of_faces = faces(pm).size();
+    stats.batches_without_improvement = singular.size() < before ? 0 : stats.batches_without_improvement + 1;
+    ++stats.batch;
+    stats.elapsed_seconds = timer.time();
+    visitor.on_batch_finished(stats);
+  }
+};
+
+} // namespace internal
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_INTERNAL_OPTIMIZER_BATCH_OPTIMIZER_H

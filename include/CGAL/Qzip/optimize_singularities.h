@@ -1,0 +1,164 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_OPTIMIZE_SINGULARITIES_H
+#define CGAL_QZIP_OPTIMIZE_SINGULARITIES_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/Qzip/Named_function_parameters.h>
+#include <CGAL/Qzip/Optimizer_visitor_base.h>
+#include <CGAL/Qzip/stop_predicates.h>
+#include <CGAL/Qzip/smoothing.h>
+#include <CGAL/Qzip/Scoring/Default_scoring.h>
+#include <CGAL/Qzip/internal/optimizer/Batch_optimizer.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/property_map.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+namespace CGAL {
+namespace Qzip {
+
+/*!
+\ingroup PkgQzipOptimizer
+
+reduces the number of singularities of a quad mesh by batches of Q-zips (paper, Sec. 4.1), while keeping
+its quads valid, its size roughly constant, its features and protected regions intact.
+
+Each batch picks at random half of the singularities that can start a Q-zip (interior vertices of valence 3
+or 5 not on a feature nor a protected face). For each, the three closest v3-like and the three closest
+v5-like singularities (graph distance through passable vertices; boundary and feature defects met on the
+way are also tried) are joined by a shortest surgery path, and the four motions of each pair are planned
+(24 candidate surgeries). Every realizable plan is scored from the plan alone (no execution) by the
+scoring functor; each singularity keeps its best improving candidate. The candidates are sorted and the
+best half is executed serially, skipping any surgery whose path or its one-ring was already operated on
+in this batch. After each surgery its scar is smoothed (see `smooth_quad_mesh()`); if the surgery leaves
+more inverted quads (scaled Jacobian `<= 0`) near its path than there were, the smoothing and the
+surgery are undone exactly. After the batch the union of its scars is smoothed again. The stop predicate
+is asked before every batch.
+
+Since a Q-zip never creates a singularity (`execute_qzip()` rolls back otherwise), the number of
+singularities never grows; since no surgery touches the border, a constrained edge or a protected face,
+and smoothing never moves their vertices, feature curves, the border and protected faces keep their
+vertices, edges and positions bit for bit; since surgeries and smoothing are both guarded, no inverted
+quad appears when the input has none. The result depends only on the input, the parameters and the seed,
+not on the mesh data structure.
+
+Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valences()` first.
+
+\tparam PolygonMesh a model of `MutableFaceGraph` and `FaceListGraph`
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+\param pm the quad mesh
+\param np optional named parameters among:
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `pm`}
+    \cgalParamType{a class model of `ReadWritePropertyMap` with `boost::graph_traits<PolygonMesh>::%vertex_descriptor`
+                   as key type and `%Point_3` as value type}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, pm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class (a \cgal kernel)}
+    \cgalParamDefault{deduced from the point type}
+  \cgalParamNEnd
+  \cgalParamNBegin{edge_is_constrained_map}
+    \cgalParamDescription{feature edges: never crossed nor edited; they also cut the fans of their vertices into
+                          sectors for the defects (see `vertex_defect()`)}
+    \cgalParamDefault{no edge is constrained}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_is_constrained_map}
+    \cgalParamDescription{(Qzip) protected faces: no surgery reaches them, smoothing does not move their vertices}
+    \cgalParamDefault{no face is protected}
+  \cgalParamNEnd
+  \cgalParamNBegin{scoring_functor}
+    \cgalParamDescription{(Qzip) a model of `QzipScoringFunctor` (see `Default_scoring`)}
+    \cgalParamDefault{`Default_scoring()`}
+  \cgalParamNEnd
+  \cgalParamNBegin{stop_predicate}
+    \cgalParamDescription{(Qzip) a model of `QzipStopPredicate`, asked before each batch}
+    \cgalParamDefault{`Default_stop_predicate()`: at most 200 batches, stop at the plateau}
+  \cgalParamNEnd
+  \cgalParamNBegin{do_smooth}
+    \cgalParamDescription{(Qzip) whether scars are smoothed; without smoothing, surgeries whose rough vertex
+                          placement inverts a quad are undone}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_relaxation_steps}
+    \cgalParamDescription{the number of smoothing sweeps after each surgery and after each batch}
+    \cgalParamDefault{5}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_count_tolerance}
+    \cgalParamDescription{(Qzip) a candidate that would take the number of faces farther than this fraction
+                          of the initial number away from it is not considered}
+    \cgalParamDefault{0.1}
+  \cgalParamNEnd
+  \cgalParamNBegin{random_seed}
+    \cgalParamDescription{the seed of the `CGAL::Random` that picks the singularities of each batch}
+    \cgalParamDefault{0}
+  \cgalParamNEnd
+  \cgalParamNBegin{visitor}
+    \cgalParamDescription{a visitor (see `Default_optimizer_visitor`), passed by `std::ref` to keep its state}
+    \cgalParamDefault{no visitor}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the statistics of the run (see `Optimizer_statistics`)
+\pre `pm` is a valid polygon mesh
+\sa `execute_qzip()`, `smooth_quad_mesh()`, `preprocess_valences()`
+*/
+template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+Optimizer_statistics optimize_singularities(PolygonMesh& pm, const NamedParameters& np = parameters::default_values())
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::get_parameter_reference;
+
+  typedef typename GetGeomTraits<PolygonMesh, NamedParameters>::type Geom_traits;
+  typedef typename GetVertexPointMap<PolygonMesh, NamedParameters>::type VPM;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::edge_is_constrained_t, NamedParameters,
+            Static_boolean_property_map<edge_descriptor, false> >::type ECM;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<Qzip::internal_np::face_is_constrained_t, NamedParameters,
+            Static_boolean_property_map<face_descriptor, false> >::type FCM;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<Qzip::internal_np::scoring_functor_t, NamedParameters,
+            Default_scoring>::type Scoring;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<Qzip::internal_np::stop_predicate_t, NamedParameters,
+            Default_stop_predicate>::type Stop;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::visitor_t, NamedParameters,
+            Default_optimizer_visitor<PolygonMesh> >::reference Visitor;
+  typedef typename std::remove_reference<Visitor>::type Visitor_type;
+
+  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, pm));
+  const ECM ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
+                                   Static_boolean_property_map<edge_descriptor, false>());
+  const FCM fcm = choose_parameter(get_parameter(np, Qzip::internal_np::face_is_constrained),
+                                   Static_boolean_property_map<face_descriptor, false>());
+  const Scoring scoring = choose_parameter<Default_scoring>(get_parameter(np, Qzip::internal_np::scoring_functor));
+  const Stop stop = choose_parameter<Default_stop_predicate>(get_parameter(np, Qzip::internal_np::stop_predicate));
+  Default_optimizer_visitor<PolygonMesh> default_visitor;
+  Visitor visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+
+  internal::Optimizer_settings settings;
+  settings.smooth = choose_parameter(get_parameter(np, Qzip::internal_np::smoothing), true);
+  settings.smoothing_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 5);
+  settings.face_count_tolerance = choose_parameter(get_parameter(np, Qzip::internal_np::face_count_tolerance), 0.1);
+  settings.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+
+  internal::Batch_optimizer<PolygonMesh, VPM, ECM, FCM, Geom_traits, Scoring, Stop, Visitor_type>
+    optimizer(pm, vpm, ecm, fcm, scoring, stop, visitor, settings);
+  return optimizer.run();
+}
+
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_OPTIMIZE_SINGULARITIES_H

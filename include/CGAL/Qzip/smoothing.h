@@ -1,0 +1,253 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_SMOOTHING_H
+#define CGAL_QZIP_SMOOTHING_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/Qzip/Named_function_parameters.h>
+#include <CGAL/Qzip/quad_operations.h>
+#include <CGAL/Qzip/quad_quality.h>
+#include <CGAL/Qzip/internal/vertex_defect.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/property_map.h>
+
+#include <boost/functional/hash.hpp>
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <memory>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Qzip {
+namespace internal {
+
+// The valence-weighted Laplacian of the paper's Sec. 4.1 with projection onto a reference surface (the
+// mesh as it was when the smoother was built, triangulated, in an AABB tree). Border vertices, feature
+// vertices (on a constrained edge) and vertices of protected faces never move. A move is kept only if
+// no incident quad becomes inverted (scaled Jacobian <= 0) unless it already was, so smoothing never
+// creates an inverted quad.
+template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap,
+          typename FaceIsConstrainedMap, typename GeomTraits>
+class Quad_smoother
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename GeomTraits::Point_3 Point;
+  typedef typename GeomTraits::Triangle_3 Triangle;
+  typedef typename std::vector<Triangle>::const_iterator Triangle_iterator;
+  typedef CGAL::AABB_triangle_primitive<GeomTraits, Triangle_iterator> Primitive;
+  typedef CGAL::AABB_traits<GeomTraits, Primitive> Traits;
+  typedef CGAL::AABB_tree<Traits> Tree;
+
+  PolygonMesh& pm;
+  VertexPointMap vpm;
+  EdgeIsConstrainedMap ecm;
+  FaceIsConstrainedMap fcm;
+  std::vector<Triangle> triangles;
+  std::unique_ptr<Tree> tree;
+  std::unordered_map<vertex_descriptor, int, boost::hash<vertex_descriptor> > fixed_valence;
+
+public:
+  double step = 0.5; // fraction of the way towards the weighted centroid
+
+  Quad_smoother(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
+                bool project)
+    : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm)
+  {
+    if(!project) return;
+    for(face_descriptor f : faces(pm))
+    {
+      std::vector<Point> p;
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pm), pm)) p.push_back(get(vpm, target(h, pm)));
+      for(std::size_t i = 1; i + 1 < p.size(); ++i)
+        if(!GeomTraits().is_degenerate_3_object()(Triangle(p[0], p[i], p[i + 1])))
+          triangles.push_back(Triangle(p[0], p[i], p[i + 1]));
+    }
+    if(triangles.empty()) return;
+    tree.reset(new Tree(triangles.begin(), triangles.end()));
+    tree->build();
+  }
+
+  bool is_fixed(vertex_descriptor v) const
+  {
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) return true;
+      if(!is_border(h, pm) && get(fcm, face(h, pm))) return true;
+    }
+    return false;
+  }
+
+  // the valence used for the spring stiffness: the valence of an interior vertex, 4 + defect on the border/features.
+  int effective_valence(vertex_descriptor v)
+  {
+    bool cut = false;
+    int n = 0;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      ++n;
+      if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) cut = true;
+    }
+    if(!cut) return n;
+    auto it = fixed_valence.find(v);
+    if(it != fixed_valence.end()) return it->second;
+    const int e = 4 + vertex_defect_info(v, pm, vpm, ecm, GeomTraits()).defect;
+    fixed_valence.emplace(v, e);
+    return e;
+  }
+
+  double min_quad_quality(vertex_descriptor v) const
+  {
+    double m = 1;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      if(is_border(h, pm) || !is_quad(h, pm)) continue;
+      m = (std::min)(m, quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm)));
+    }
+    return m;
+  }
+
+  Point project(const Point& p, const Point& hint) const
+  {
+    if(!tree) return p;
+    return tree->closest_point(p, hint);
+  }
+
+  // `iterations` Jacobi sweeps over the free vertices of `region` (in the given order); returns the
+  // number of accepted moves.
+  std::size_t smooth(const std::vector<vertex_descriptor>& region, int iterations)
+  {
+    std::vector<vertex_descriptor> free;
+    for(vertex_descriptor v : region) if(!is_fixed(v)) free.push_back(v);
+    std::vector<Point> targets(free.size());
+    std::size_t accepted = 0;
+    for(int it = 0; it < iterations; ++it)
+    {
+      for(std::size_t i = 0; i < free.size(); ++i)
+      {
+        const vertex_descriptor v = free[i];
+        const int dv = effective_valence(v);
+        double x = 0, y = 0, z = 0, w = 0;
+        for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+        {
+          const vertex_descriptor u = source(h, pm);
+          const int s = dv + effective_valence(u);
+          const double k = s == 8 ? 1. : (s < 8 ? 0.5 : 2.);
+          const Point& p = get(vpm, u);
+          x += k * CGAL::to_double(p.x()); y += k * CGAL::to_double(p.y()); z += k * CGAL::to_double(p.z());
+          w += k;
+        }
+        const Point& p = get(vpm, v);
+        if(w == 0) { targets[i] = p; continue; }
+        targets[i] = Point(p.x() + step * (x / w - p.x()), p.y() + step * (y / w - p.y()), p.z() + step * (z / w - p.z()));
+      }
+      for(std::size_t i = 0; i < free.size(); ++i)
+      {
+        const vertex_descriptor v = free[i];
+        const Point old = get(vpm, v);
+        const Point np = project(targets[i], old);
+        if(np == old) continue;
+        const double before = min_quad_quality(v);
+        put(vpm, v, np);
+        const double after = min_quad_quality(v);
+        if(after > 0 || after >= before) ++accepted;
+        else put(vpm, v, old);
+      }
+    }
+    return accepted;
+  }
+};
+
+} // namespace internal
+
+/*!
+\ingroup PkgQzipOptimizer
+
+smooths the vertices of `vertex_range` with the valence-weighted Laplacian of the paper's Sec. 4.1:
+each edge is a spring whose stiffness is 1, 0.5 or 2 when the valences of its two vertices sum to 8,
+less than 8 or more than 8 (border and feature vertices count as `4 + defect`), and each vertex moves
+halfway towards the equilibrium of its springs, then back onto the surface as it was before the call
+(closest point in a `CGAL::AABB_tree` of its triangulated faces). Border vertices, vertices of
+constrained (feature) edges and vertices of protected faces do not move, so feature curves and
+protected regions are kept bit for bit. A move that would make an incident quad inverted (scaled
+Jacobian `<= 0`, see `quad_scaled_jacobian()`) is refused, so no quad gets inverted.
+
+\tparam PolygonMesh a model of `FaceListGraph`
+\tparam VertexRange a range of vertex descriptors of `pm`
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+\param pm the polygon mesh
+\param vertex_range the vertices to smooth (in this order within a sweep)
+\param np optional named parameters among:
+\cgalNamedParamsBegin
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{a property map associating points to the vertices of `pm`}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, pm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{edge_is_constrained_map}
+    \cgalParamDescription{feature edges; their vertices are fixed}
+    \cgalParamDefault{no edge is constrained}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_is_constrained_map}
+    \cgalParamDescription{protected faces (Qzip's parameter); their vertices are fixed}
+    \cgalParamDefault{no face is protected}
+  \cgalParamNEnd
+  \cgalParamNBegin{number_of_iterations}
+    \cgalParamDescription{the number of sweeps}
+    \cgalParamDefault{5}
+  \cgalParamNEnd
+  \cgalParamNBegin{do_project}
+    \cgalParamDescription{whether moved vertices are projected back onto the surface}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{geom_traits}
+    \cgalParamDescription{an instance of a geometric traits class}
+    \cgalParamDefault{a \cgal Kernel deduced from the point type}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+\returns the number of accepted vertex moves
+*/
+template <typename PolygonMesh, typename VertexRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t smooth_quad_mesh(PolygonMesh& pm, const VertexRange& vertex_range,
+                             const NamedParameters& np = parameters::default_values())
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename GetGeomTraits<PolygonMesh, NamedParameters>::type Geom_traits;
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, pm));
+  auto ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
+                              Static_boolean_property_map<edge_descriptor, false>());
+  auto fcm = choose_parameter(get_parameter(np, Qzip::internal_np::face_is_constrained),
+                              Static_boolean_property_map<face_descriptor, false>());
+  const int iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 5);
+  const bool project = choose_parameter(get_parameter(np, CGAL::internal_np::do_project), true);
+  internal::Quad_smoother<PolygonMesh, decltype(vpm), decltype(ecm), decltype(fcm), Geom_traits>
+    smoother(pm, vpm, ecm, fcm, project);
+  std::vector<typename GT::vertex_descriptor> region(std::begin(vertex_range), std::end(vertex_range));
+  return smoother.smooth(region, iterations);
+}
+
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_SMOOTHING_H
