@@ -18,6 +18,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
+#include <boost/graph/breadth_first_search.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
 #include <boost/graph/graph_traits.hpp>
 
@@ -39,6 +40,21 @@ struct Stop_at_target : public boost::default_dijkstra_visitor
   explicit Stop_at_target(Vertex t) : t(t) {}
   template <typename Graph>
   void examine_vertex(Vertex v, const Graph&) const { if(v == t) throw Target_reached(); }
+};
+
+// breadth-first search recording predecessors, stopping when the target is discovered
+template <typename Vertex, typename PredecessorMap>
+struct Record_until_target : public boost::default_bfs_visitor
+{
+  Vertex t;
+  PredecessorMap predecessor;
+  Record_until_target(Vertex t, PredecessorMap p) : t(t), predecessor(p) {}
+  template <typename Edge, typename Graph>
+  void tree_edge(const Edge& e, const Graph& g) const
+  {
+    put(predecessor, target(e, g), source(e, g));
+    if(target(e, g) == t) throw Target_reached();
+  }
 };
 
 // whether a surgery path may pass through `v`: interior, not on a constrained edge, not on a protected face.
@@ -116,16 +132,29 @@ shortest_surgery_path(const PolygonMesh& pm,
   const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
 
   auto passable = [&](vertex_descriptor v) { return v == t || internal::is_passable(v, pm, ecm, fcm); };
-  internal::Lazy_property_map<vertex_descriptor, double> distance((std::numeric_limits<double>::max)());
   internal::Lazy_property_map<vertex_descriptor, vertex_descriptor> predecessor(GT::null_vertex());
   internal::Blocking_color_map<vertex_descriptor, decltype(passable)> color(passable);
-  put(distance, s, 0.);
   put(predecessor, s, s);
   try
   {
-    boost::dijkstra_shortest_paths_no_init(pm, s, predecessor, distance, weight, vim,
-                                           std::less<double>(), boost::closed_plus<double>(), 0.,
-                                           internal::Stop_at_target<vertex_descriptor>(t), color);
+    if(parameters::is_default_parameter<NamedParameters, Qzip::internal_np::edge_weight_t>::value)
+    {
+      // unit weights: a breadth-first search finds a path with the fewest edges
+      boost::queue<vertex_descriptor> queue;
+      put(color, s, boost::gray_color);
+      queue.push(s);
+      boost::breadth_first_visit(pm, s, queue,
+                                 internal::Record_until_target<vertex_descriptor, decltype(predecessor)>(t, predecessor),
+                                 color);
+    }
+    else
+    {
+      internal::Lazy_property_map<vertex_descriptor, double> distance((std::numeric_limits<double>::max)());
+      put(distance, s, 0.);
+      boost::dijkstra_shortest_paths_no_init(pm, s, predecessor, distance, weight, vim,
+                                             std::less<double>(), boost::closed_plus<double>(), 0.,
+                                             internal::Stop_at_target<vertex_descriptor>(t), color);
+    }
     return path; // exhausted without reaching t
   }
   catch(const internal::Target_reached&) {}

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 
 namespace CGAL {
 namespace Qzip {
@@ -60,16 +61,16 @@ private:
   double energy(int q, typename boost::graph_traits<PolygonMesh>::vertex_descriptor at,
                 const Qzip_candidate<PolygonMesh>& c, Context& ctx) const
   {
-    const auto& nb = ctx.nearest_singularities(at);
+    const auto nb = ctx.nearest_singularities(at);
     double e = 0;
     std::size_t k = 0;
-    for(const auto& j : nb.singularities)
+    for(const auto& j : nb)
     {
       if(j.vertex == c.source || j.vertex == c.target) continue;
       if(k++ == number_of_neighbors) break;
       e += double(q * charge(j.defect)) / double(j.distance);
     }
-    if(nb.feature_distance > 0 && nb.feature_distance <= ctx.radius() && !ctx.is_border_or_feature(at))
+    if(nb.feature_distance > 0 && nb.feature_distance < (std::numeric_limits<int>::max)())
       e += feature_weight / double(nb.feature_distance);
     return e;
   }

@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 #include <vector>
 
@@ -47,8 +48,14 @@ struct Nearby_singularity
 
 What a scoring functor may ask about the mesh while candidates are scored. The optimizer owns it and
 refreshes it before each batch; all answers describe the mesh as it was at the start of the batch
-(scoring never edits the mesh). Distances are graph distances in edges, found by breadth-first
-searches bounded by a radius and memoized during the scoring of one singularity's candidates.
+(scoring never edits the mesh). Distances are graph distances in edges.
+
+At the start of each batch the context computes, in time linear in the size of the mesh, the
+`max_nearest()` closest singularities of every vertex (a breadth-first search from all singularities
+at once in which each vertex keeps the first `max_nearest()` distinct sources that reach it: these are
+exactly its closest ones, up to ties), the distance of every vertex to the border and the features, and
+the closest separatrices; `nearest_singularities()` and `distance_to_separatrix()` are then lookups.
+`distance()` runs bounded breadth-first searches, a few of which are kept.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`
 \tparam VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap the property maps of the optimizer
@@ -65,72 +72,65 @@ public:
   typedef typename Kernel_traits<Point>::Kernel Kernel;
   typedef Nearby_singularity<PolygonMesh> Nearby;
 
-  /// what `nearest_singularities()` returns
+  /// the number of closest singularities known at each vertex
+  static const std::size_t max_nearest_singularities = 6;
+
+  /// what `nearest_singularities()` returns: a range of `Nearby_singularity` by increasing distance
   struct Neighborhood
   {
-    std::vector<Nearby> singularities; ///< the closest ones, by distance (at most `max_nearest()`)
-    int feature_distance;              ///< distance to the closest border or feature vertex (`radius() + 1` if none)
+    Nearby items[max_nearest_singularities];
+    std::size_t size = 0;
+    int feature_distance = (std::numeric_limits<int>::max)(); ///< distance to the closest border or feature vertex (`INT_MAX` if none)
+    const Nearby* begin() const { return items; }
+    const Nearby* end() const { return items + size; }
   };
 
 private:
   typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<int> >::type Int_map;
   typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<unsigned int> >::type Stamp_map;
-  typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<vertex_descriptor> >::type Vertex_map;
-  typedef boost::hash<vertex_descriptor> Hash;
+
+  struct Label { vertex_descriptor source; int distance; };
 
   PolygonMesh& pm;
   VertexPointMap vpm;
   EdgeIsConstrainedMap ecm;
   FaceIsConstrainedMap fcm;
 
-  Int_map defect_map;
-  Stamp_map defect_stamp;
+  // per batch: index of each vertex, its defect, whether it is a border/feature vertex
+  Stamp_map stamp;
+  Int_map index_map;
   unsigned int epoch = 0;
+  std::vector<vertex_descriptor> by_index;
+  std::vector<int> defects;
+  std::vector<unsigned char> cut;
+  std::vector<int> feature_dist;
+  std::vector<Label> near_labels, sep_labels;
+  std::vector<unsigned char> near_count, sep_count;
 
-  Stamp_map bfs_stamp;
-  Int_map bfs_dist;
-  unsigned int bfs_epoch = 0;
-  std::vector<vertex_descriptor> queue;
-
-  Stamp_map sep_stamp;
-  Vertex_map sep_owner; // null_vertex(): on separatrices of several singularities
-
-  int m_radius = 10;
-  std::size_t m_max_nearest = 5;
   int m_separatrix_length = 32;
+  int m_separatrix_radius = 3;
   double m_mean_face_area = 1;
 
-  Int_map feature_map; // 1 on border and feature vertices (valid with defect_stamp)
-
-  std::unordered_map<vertex_descriptor, Neighborhood, Hash> nearest_cache;
-
-  // a few breadth-first balls kept for distance() (sources of the current candidates)
-  static const std::size_t number_of_slots = 6;
+  // a few breadth-first balls kept for distance()
   struct Slot { vertex_descriptor source; int radius; unsigned int epoch; Stamp_map stamp; Int_map dist; };
   std::vector<Slot> slots;
   std::size_t next_slot = 0;
   int m_distance_radius_hint = 0;
+  std::vector<vertex_descriptor> queue;
 
 public:
   /// \cond SKIP_IN_MANUAL
   Scoring_context(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm)
     : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm),
-      defect_map(get(CGAL::dynamic_vertex_property_t<int>(), pm)),
-      defect_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
-      bfs_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
-      bfs_dist(get(CGAL::dynamic_vertex_property_t<int>(), pm)),
-      sep_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
-      sep_owner(get(CGAL::dynamic_vertex_property_t<vertex_descriptor>(), pm)),
-      feature_map(get(CGAL::dynamic_vertex_property_t<int>(), pm))
+      stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
+      index_map(get(CGAL::dynamic_vertex_property_t<int>(), pm))
   {
-    for(std::size_t i = 0; i < number_of_slots; ++i)
+    for(std::size_t i = 0; i < 4; ++i)
       slots.push_back(Slot{ GT::null_vertex(), -1, 0u, get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm),
                             get(CGAL::dynamic_vertex_property_t<int>(), pm) });
     for(vertex_descriptor v : vertices(pm))
     {
-      put(defect_stamp, v, 0u);
-      put(bfs_stamp, v, 0u);
-      put(sep_stamp, v, 0u);
+      put(stamp, v, 0u);
       for(Slot& sl : slots) put(sl.stamp, v, 0u);
     }
     double area = 0;
@@ -140,38 +140,55 @@ public:
     if(!(m_mean_face_area > 0)) m_mean_face_area = 1.;
   }
 
-  // refreshes the defects and separatrices; returns the singular vertices (any order).
+  // refreshes everything; returns the singular vertices (in the order of vertices(pm)).
   std::vector<vertex_descriptor> begin_batch()
   {
     ++epoch;
     clear_cache();
+    by_index.clear(); defects.clear(); cut.clear();
     std::vector<vertex_descriptor> singular;
     for(vertex_descriptor v : vertices(pm))
     {
       if(halfedge(v, pm) == GT::null_halfedge()) continue;
-      int d;
-      const bool cut = is_border_or_feature(v);
-      if(cut)
-        d = internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect;
-      else
-        d = int(internal::valence(v, pm)) - 4;
-      put(defect_map, v, d);
-      put(feature_map, v, cut ? 1 : 0);
-      put(defect_stamp, v, epoch);
+      const bool c = is_border_or_feature(v);
+      const int d = c ? internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect
+                      : int(internal::valence(v, pm)) - 4;
+      put(stamp, v, epoch);
+      put(index_map, v, int(by_index.size()));
+      by_index.push_back(v);
+      defects.push_back(d);
+      cut.push_back(c ? 1 : 0);
       if(d != 0) singular.push_back(v);
     }
-    trace_separatrices(singular);
+    // closest singularities
+    std::vector<std::pair<vertex_descriptor, vertex_descriptor> > seeds;
+    for(vertex_descriptor v : singular) seeds.emplace_back(v, v);
+    label_bfs(seeds, max_nearest_singularities, (std::numeric_limits<int>::max)(), near_labels, near_count);
+    // distance to the border and the features
+    feature_dist.assign(by_index.size(), (std::numeric_limits<int>::max)());
+    queue.clear();
+    for(std::size_t i = 0; i < by_index.size(); ++i) if(cut[i]) { feature_dist[i] = 0; queue.push_back(by_index[i]); }
+    for(std::size_t i = 0; i < queue.size(); ++i)
+    {
+      const int d = feature_dist[std::size_t(get(index_map, queue[i]))];
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(queue[i], pm), pm))
+      {
+        const std::size_t j = std::size_t(get(index_map, source(h, pm)));
+        if(feature_dist[j] <= d + 1) continue;
+        feature_dist[j] = d + 1;
+        queue.push_back(source(h, pm));
+      }
+    }
+    // separatrices
+    seeds.clear();
+    trace_separatrices(singular, seeds);
+    label_bfs(seeds, 3, m_separatrix_radius, sep_labels, sep_count);
     return singular;
   }
 
-  void clear_cache()
-  {
-    nearest_cache.clear();
-    for(Slot& sl : slots) sl.source = GT::null_vertex();
-  }
+  void clear_cache() { for(Slot& sl : slots) sl.source = GT::null_vertex(); }
   // the radius the distance queries of the next candidates will need at most
   void set_distance_radius_hint(int r) { m_distance_radius_hint = r; }
-  void set_radius(int r) { m_radius = r; }
   /// \endcond
 
   /// the mesh.
@@ -181,7 +198,7 @@ public:
   /// the position of `v`.
   Point point(vertex_descriptor v) const { return get(vpm, v); }
   /// the defect of `v` at the start of the batch (see `vertex_defect()`).
-  int defect(vertex_descriptor v) const { return get(defect_stamp, v) == epoch ? get(defect_map, v) : 0; }
+  int defect(vertex_descriptor v) const { const int i = index(v); return i < 0 ? 0 : defects[std::size_t(i)]; }
   /// `true` if `v` lies on the border or on a constrained (feature) edge.
   bool is_border_or_feature(vertex_descriptor v) const
   {
@@ -196,58 +213,46 @@ public:
       if(!is_border(h, pm) && get(fcm, face(h, pm))) return true;
     return false;
   }
-  /// the radius of the searches of `nearest_singularities()`.
-  int radius() const { return m_radius; }
-  /// the number of singularities `nearest_singularities()` keeps.
-  std::size_t max_nearest() const { return m_max_nearest; }
   /// the mean area of the faces of the mesh given to the optimizer (the uniform target size).
   double mean_face_area() const { return m_mean_face_area; }
 
-  /// the area of face `f` (half the norm of the cross product of the diagonals of a quad, of a fan otherwise).
+  /// the area of face `f` (half the norm of the sum of the cross products of a fan).
   double face_area(face_descriptor f) const
   {
-    std::vector<Point> p;
-    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pm), pm)) p.push_back(get(vpm, target(h, pm)));
-    if(p.size() < 3) return 0;
+    Point p[3];
+    int k = 0;
     double x = 0, y = 0, z = 0;
-    for(std::size_t i = 1; i + 1 < p.size(); ++i)
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pm), pm))
     {
-      const auto n = CGAL::cross_product(p[i] - p[0], p[i + 1] - p[0]);
+      const Point q = get(vpm, target(h, pm));
+      if(k < 2) { p[k++] = q; continue; }
+      const auto n = CGAL::cross_product(p[1] - p[0], q - p[0]);
       x += n.x(); y += n.y(); z += n.z();
+      p[1] = q;
     }
     return 0.5 * std::sqrt(x * x + y * y + z * z);
   }
 
-  /// the length of the edge from `a` to `b`.
+  /// the length of the edge (or the distance) from `a` to `b`.
   double length(vertex_descriptor a, vertex_descriptor b) const
   { return std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, a), get(vpm, b)))); }
 
-  /// the singularities closest to `v` (not `v` itself), at most `max_nearest()` of them within `radius()`
-  /// edges, by distance (ties in breadth-first order), and the distance to the closest border or feature vertex.
-  const Neighborhood& nearest_singularities(vertex_descriptor v)
+  /// the (at most `max_nearest_singularities`) singularities closest to `v`, `v` excluded, by distance, and
+  /// the distance from `v` to the closest border or feature vertex.
+  Neighborhood nearest_singularities(vertex_descriptor v) const
   {
-    auto it = nearest_cache.find(v);
-    if(it != nearest_cache.end()) return it->second;
     Neighborhood nb;
-    nb.feature_distance = m_radius + 1;
-    int stop_level = m_radius;
-    // up to the level where enough singularities are found; the feature distance within that level
-    bfs(v, m_radius, [&](vertex_descriptor w, int d)
+    const int i = index(v);
+    if(i < 0) return nb;
+    nb.feature_distance = feature_dist[std::size_t(i)];
+    const std::size_t K = max_nearest_singularities;
+    for(std::size_t k = 0; k < near_count[std::size_t(i)]; ++k)
     {
-      if(d > stop_level) return false;
-      if(w != v)
-      {
-        const int dw = defect(w);
-        if(dw != 0 && nb.singularities.size() < m_max_nearest)
-        {
-          nb.singularities.push_back(Nearby{ w, dw, d });
-          if(nb.singularities.size() == m_max_nearest) stop_level = d;
-        }
-        if(nb.feature_distance > m_radius && is_cut(w)) nb.feature_distance = d;
-      }
-      return true;
-    });
-    return nearest_cache.emplace(v, nb).first->second;
+      const Label& l = near_labels[std::size_t(i) * K + k];
+      if(l.source == v) continue;
+      nb.items[nb.size++] = Nearby{ l.source, defect(l.source), l.distance };
+    }
+    return nb;
   }
 
   /// the graph distance from `a` to `b`, or `max_radius + 1` if it is larger than `max_radius`.
@@ -288,71 +293,67 @@ public:
   }
 
   /// the distance from `v` to the closest vertex on a separatrix (a straight edge line leaving a
-  /// singularity) of a singularity other than `x1` and `x2`, or `max_radius + 1` if there is none that close.
-  int distance_to_separatrix(vertex_descriptor v, vertex_descriptor x1, vertex_descriptor x2, int max_radius)
+  /// singularity) of a singularity other than `x1` and `x2`, or `max_radius + 1` if there is none
+  /// within `min(max_radius, 3)` edges.
+  int distance_to_separatrix(vertex_descriptor v, vertex_descriptor x1, vertex_descriptor x2, int max_radius) const
   {
-    int found = max_radius + 1;
-    bfs(v, max_radius, [&](vertex_descriptor w, int d)
-    {
-      if(d >= found) return false;
-      if(get(sep_stamp, w) == epoch)
+    const int i = index(v);
+    if(i >= 0)
+      for(std::size_t k = 0; k < sep_count[std::size_t(i)]; ++k)
       {
-        const vertex_descriptor o = get(sep_owner, w);
-        if(o == GT::null_vertex() || (o != x1 && o != x2)) found = d;
+        const Label& l = sep_labels[std::size_t(i) * 3 + k];
+        if(l.source == x1 || l.source == x2) continue;
+        return l.distance <= max_radius ? l.distance : max_radius + 1;
       }
-      return true;
-    });
-    return found;
+    return max_radius + 1;
   }
 
 private:
-  bool is_cut(vertex_descriptor v) const { return get(defect_stamp, v) == epoch && get(feature_map, v) != 0; }
+  int index(vertex_descriptor v) const { return get(stamp, v) == epoch ? get(index_map, v) : -1; }
 
-  // breadth-first search from s up to `radius`; f(w, d) is called once per reached vertex in
-  // breadth-first order and returns false to stop the search.
-  template <typename F>
-  void bfs(vertex_descriptor s, int radius, F f)
+  // breadth-first search from all seeds (vertex, label) at once, level by level, in which each vertex keeps
+  // the first K distinct labels that reach it (with their distances), up to `max_distance`.
+  void label_bfs(const std::vector<std::pair<vertex_descriptor, vertex_descriptor> >& seeds, std::size_t K, int max_distance,
+                 std::vector<Label>& labels, std::vector<unsigned char>& count)
   {
-    ++bfs_epoch;
-    queue.clear();
-    queue.push_back(s);
-    put(bfs_stamp, s, bfs_epoch);
-    put(bfs_dist, s, 0);
-    for(std::size_t i = 0; i < queue.size(); ++i)
+    labels.assign(by_index.size() * K, Label{ GT::null_vertex(), 0 });
+    count.assign(by_index.size(), 0);
+    auto add = [&](std::size_t i, vertex_descriptor l, int d)
     {
-      const vertex_descriptor v = queue[i];
-      const int d = get(bfs_dist, v);
-      if(!f(v, d)) return;
-      if(d >= radius) continue;
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-      {
-        const vertex_descriptor w = source(h, pm);
-        if(get(bfs_stamp, w) == bfs_epoch) continue;
-        put(bfs_stamp, w, bfs_epoch);
-        put(bfs_dist, w, d + 1);
-        queue.push_back(w);
-      }
-    }
-  }
-
-  void mark_separatrix(vertex_descriptor w, vertex_descriptor owner)
-  {
-    if(get(sep_stamp, w) == epoch)
+      const std::size_t c = count[i];
+      if(c == K) return false;
+      for(std::size_t k = 0; k < c; ++k) if(labels[i * K + k].source == l) return false;
+      labels[i * K + c] = Label{ l, d };
+      ++count[i];
+      return true;
+    };
+    std::vector<std::pair<vertex_descriptor, vertex_descriptor> > frontier, next_frontier;
+    for(const auto& s : seeds)
     {
-      if(get(sep_owner, w) != owner) put(sep_owner, w, GT::null_vertex());
-      return;
+      const int i = index(s.first);
+      if(i >= 0 && add(std::size_t(i), s.second, 0)) frontier.push_back(s);
     }
-    put(sep_stamp, w, epoch);
-    put(sep_owner, w, owner);
+    for(int d = 0; !frontier.empty() && d < max_distance; ++d)
+    {
+      next_frontier.clear();
+      for(const auto& f : frontier)
+        for(halfedge_descriptor h : halfedges_around_target(halfedge(f.first, pm), pm))
+        {
+          const vertex_descriptor u = source(h, pm);
+          if(add(std::size_t(get(index_map, u)), f.second, d + 1)) next_frontier.emplace_back(u, f.second);
+        }
+      frontier.swap(next_frontier);
+    }
   }
 
   // straight edge lines from every interior singularity, through regular interior vertices, until a
-  // singular, border or feature vertex or `m_separatrix_length` edges.
-  void trace_separatrices(const std::vector<vertex_descriptor>& singular)
+  // singular, border or feature vertex or `m_separatrix_length` edges; (vertex, owner) pairs.
+  void trace_separatrices(const std::vector<vertex_descriptor>& singular,
+                          std::vector<std::pair<vertex_descriptor, vertex_descriptor> >& out) const
   {
     for(vertex_descriptor s : singular)
     {
-      if(is_border_or_feature(s)) continue;
+      if(cut[std::size_t(index(s))]) continue;
       for(halfedge_descriptor h0 : halfedges_around_target(halfedge(s, pm), pm))
       {
         halfedge_descriptor o = opposite(h0, pm); // s -> w
@@ -360,8 +361,9 @@ private:
         {
           const vertex_descriptor w = target(o, pm);
           if(w == s) break;
-          mark_separatrix(w, s);
-          if(defect(w) != 0 || internal::valence(w, pm) != 4 || is_cut(w)) break;
+          out.emplace_back(w, s);
+          const std::size_t iw = std::size_t(index(w));
+          if(defects[iw] != 0 || cut[iw] || internal::valence(w, pm) != 4) break;
           o = internal::rotate_outgoing(opposite(o, pm), 2, pm);
         }
       }

@@ -1,0 +1,173 @@
+// Times the Q-zip primitive on real meshes: path search, planning, execution and undo, by path length,
+// with a plain breadth-first search between the same two vertices as the floor.
+//
+// usage: benchmark_qzip [N per mesh = 2000] [mesh files...]   (default: bundled meshes + shared corpus)
+
+#include "qzip_test_utils.h"
+
+#include <CGAL/Qzip/preprocess.h>
+#include <CGAL/Qzip/qzip.h>
+#include <CGAL/Random.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <deque>
+
+using namespace qzip_test;
+namespace Q = CGAL::Qzip;
+typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
+typedef std::chrono::steady_clock Clock;
+
+static double micro(Clock::time_point a, Clock::time_point b)
+{ return std::chrono::duration<double, std::micro>(b - a).count(); }
+
+struct Sample { std::size_t length; double path, plan, exec, undo, bfs; };
+
+// the floor: a plain BFS from s until t, with a visited stamp array (no allocation per search)
+struct Plain_bfs
+{
+  std::vector<unsigned> stamp;
+  unsigned current = 0;
+  std::vector<vertex_descriptor> queue;
+  std::size_t run(const Surface_mesh& m, vertex_descriptor s, vertex_descriptor t)
+  {
+    if(stamp.size() < num_vertices(m)) stamp.assign(num_vertices(m), 0);
+    ++current;
+    queue.clear();
+    queue.push_back(s);
+    stamp[s] = current;
+    for(std::size_t i = 0; i < queue.size(); ++i)
+    {
+      const vertex_descriptor v = queue[i];
+      if(v == t) return i;
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+      {
+        const vertex_descriptor u = source(h, m);
+        if(stamp[u] != current) { stamp[u] = current; queue.push_back(u); }
+      }
+    }
+    return queue.size();
+  }
+};
+
+static double median(std::vector<double> v)
+{
+  if(v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+static double percentile(std::vector<double> v, double p)
+{
+  if(v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, std::size_t(p * double(v.size())))];
+}
+
+static bool singular(vertex_descriptor v, const Surface_mesh& m)
+{
+  return !on_border(v, m) && valence(v, m) != 4;
+}
+
+void run(const std::string& file, std::size_t count, std::vector<Sample>& all)
+{
+  Surface_mesh m;
+  if(!read_mesh(file, m)) { std::printf("cannot read %s\n", file.c_str()); return; }
+  Q::preprocess_valences(m);
+  m.collect_garbage();
+  CGAL::Random rng(42);
+  Plain_bfs bfs;
+  Q::Qzip_history<Surface_mesh> history(m);
+  std::vector<Sample> samples;
+  std::size_t refused = 0, attempts = 0;
+  while(samples.size() < count && attempts < 20 * count)
+  {
+    ++attempts;
+    std::vector<vertex_descriptor> sing;
+    for(auto v : vertices(m)) if(singular(v, m)) sing.push_back(v);
+    if(sing.size() < 2) break;
+    const vertex_descriptor s = sing[std::size_t(rng.get_int(0, int(sing.size())))];
+    // a singularity at a random distance up to 32 edges
+    const int reach = rng.get_int(1, 33);
+    std::map<vertex_descriptor, int> dist;
+    std::deque<vertex_descriptor> queue(1, s);
+    dist[s] = 0;
+    std::vector<vertex_descriptor> candidates;
+    while(!queue.empty())
+    {
+      const vertex_descriptor v = queue.front(); queue.pop_front();
+      if(v != s && singular(v, m) && dist[v] >= reach / 2) candidates.push_back(v);
+      if(dist[v] >= reach) continue;
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+        if(dist.emplace(source(h, m), dist[v] + 1).second) queue.push_back(source(h, m));
+    }
+    if(candidates.empty()) continue;
+    const vertex_descriptor t = candidates[std::size_t(rng.get_int(0, int(candidates.size())))];
+
+    Sample x;
+    auto t0 = Clock::now();
+    const auto path = Q::shortest_surgery_path(m, s, t);
+    auto t1 = Clock::now();
+    if(path.empty()) continue;
+    const auto plan = Q::plan_qzip(m, path, Q::Strip_operation(rng.get_int(0, 4)));
+    auto t2 = Clock::now();
+    if(!plan.is_realizable()) { ++refused; continue; }
+    const auto r = Q::execute_qzip(m, plan, history);
+    auto t3 = Clock::now();
+    if(!r.is_done()) { ++refused; continue; }
+    history.undo_last();
+    auto t4 = Clock::now();
+    bfs.run(m, s, t);
+    auto t5 = Clock::now();
+    x.length = path.size() - 1;
+    x.path = micro(t0, t1); x.plan = micro(t1, t2); x.exec = micro(t2, t3); x.undo = micro(t3, t4); x.bfs = micro(t4, t5);
+    samples.push_back(x);
+  }
+  std::vector<double> exec, path;
+  for(const Sample& x : samples) { exec.push_back(x.exec); path.push_back(x.path); }
+  std::printf("| %s | %zu | %zu | %zu | %.1f | %.1f |\n", file.substr(file.find_last_of('/') + 1).c_str(),
+              std::size_t(faces(m).size()), samples.size(), refused, median(exec), median(path));
+  all.insert(all.end(), samples.begin(), samples.end());
+}
+
+int main(int argc, char** argv)
+{
+  const std::size_t count = argc > 1 ? std::size_t(std::atoi(argv[1])) : 2000;
+  std::vector<std::string> files;
+  for(int i = 2; i < argc; ++i) files.push_back(argv[i]);
+  if(files.empty())
+  {
+    const std::string dir = shared_corpus_dir("benchmark on the shared corpus");
+    if(!dir.empty())
+    {
+      for(const std::string& f : shared_corpus_files())
+        if(f != "trimesh_quadknot.obj") files.push_back(dir + "/" + f);
+    }
+    else
+      files = { CGAL::data_file_path("meshes/spot_quadrangulated.obj"), CGAL::data_file_path("meshes/blub_quadrangulated.obj") };
+  }
+  std::printf("| mesh | quads | Q-zips timed | refused or rolled back | median execute (us) | median path search (us) |\n");
+  std::printf("|---|---|---|---|---|---|\n");
+  std::vector<Sample> all;
+  for(const std::string& f : files) run(f, count, all);
+
+  std::printf("\n| path length | Q-zips | execute median (us) | execute p90 (us) | plan median (us) | path search median (us) | path + plan + execute median (us) | undo median (us) | plain BFS s->t median (us) | execute / BFS | path search / BFS |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  const std::size_t buckets[][2] = { {1, 2}, {3, 5}, {6, 8}, {9, 16}, {17, 32}, {33, 1000} };
+  for(const auto& b : buckets)
+  {
+    std::vector<double> exec, plan, path, total, undo, bfs, r1, r2;
+    for(const Sample& x : all)
+      if(x.length >= b[0] && x.length <= b[1])
+      {
+        exec.push_back(x.exec); plan.push_back(x.plan); path.push_back(x.path); undo.push_back(x.undo);
+        total.push_back(x.path + x.plan + x.exec); bfs.push_back(x.bfs);
+        r1.push_back(x.exec / std::max(x.bfs, 1e-3)); r2.push_back(x.path / std::max(x.bfs, 1e-3));
+      }
+    if(exec.empty()) continue;
+    std::printf("| %zu-%zu | %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f |\n", b[0], b[1], exec.size(),
+                median(exec), percentile(exec, 0.9), median(plan), median(path), median(total), median(undo), median(bfs),
+                median(r1), median(r2));
+  }
+  return EXIT_SUCCESS;
+}
