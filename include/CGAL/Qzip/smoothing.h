@@ -66,6 +66,7 @@ class Quad_smoother
 
 public:
   double step = 0.5; // fraction of the way towards the weighted centroid
+  double quality_floor = 0; // a move is kept if the incident quads stay above min(floor, their quality before)
 
   Quad_smoother(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
                 bool project)
@@ -167,7 +168,7 @@ public:
         const double before = min_quad_quality(v);
         put(vpm, v, np);
         const double after = min_quad_quality(v);
-        if(after > 0 || after >= before) ++accepted;
+        if(after >= before || (after > 0 && after >= quality_floor)) ++accepted;
         else put(vpm, v, old);
       }
     }

@@ -72,7 +72,7 @@ batch kept no surgery at all (nothing improves the score any more: the plateau).
 struct No_improvement_stop_predicate
 {
   std::size_t patience;
-  explicit No_improvement_stop_predicate(std::size_t patience = 4) : patience(patience) {}
+  explicit No_improvement_stop_predicate(std::size_t patience = 10) : patience(patience) {}
   bool operator()(const Optimizer_statistics& s) const
   {
     if(s.batch == 0) return false;
@@ -121,13 +121,13 @@ Or_stop_predicate<StopPredicate1, StopPredicate2> stop_when_either(const StopPre
 \cgalModels `QzipStopPredicate`
 
 the default stop predicate of `optimize_singularities()`: at most `max_batches` batches (default 200),
-and stop at the plateau (`No_improvement_stop_predicate` with patience `patience`, default 4).
+and stop at the plateau (`No_improvement_stop_predicate` with patience `patience`, default 10).
 */
 struct Default_stop_predicate
 {
   std::size_t max_batches;
   std::size_t patience;
-  explicit Default_stop_predicate(std::size_t max_batches = 200, std::size_t patience = 4)
+  explicit Default_stop_predicate(std::size_t max_batches = 200, std::size_t patience = 10)
     : max_batches(max_batches), patience(patience) {}
   bool operator()(const Optimizer_statistics& s) const
   {

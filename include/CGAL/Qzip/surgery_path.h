@@ -57,7 +57,8 @@ struct Record_until_target : public boost::default_bfs_visitor
   }
 };
 
-// whether a surgery path may pass through `v`: interior, not on a constrained edge, not on a protected face.
+// whether a surgery path may pass through `v`: interior, not on a constrained edge, not on a protected
+// face, not on a face that is not a quad (the edges of a triangle count as border edges, paper Sec. 3.2).
 template <typename PolygonMesh, typename ECM, typename FCM>
 bool is_passable(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v, const PolygonMesh& pm,
                  const ECM& ecm, const FCM& fcm)
@@ -65,7 +66,7 @@ bool is_passable(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
   for(auto h : halfedges_around_target(halfedge(v, pm), pm))
   {
     if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) return false;
-    if(get(fcm, face(h, pm))) return false; // h is not a border halfedge here
+    if(get(fcm, face(h, pm)) || !is_quad(h, pm)) return false; // h is not a border halfedge here
   }
   return true;
 }
@@ -76,7 +77,8 @@ bool is_passable(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
 \ingroup PkgQzipPrimitive
 
 computes a surgery path (paper, Sec. 2.4): a shortest simple edge path from `s` to `t` whose inner
-vertices are interior vertices not incident to a constrained edge nor to a protected face, found with
+vertices are interior vertices incident only to quads that are not protected, and to no constrained
+edge (a path meeting a triangle treats its edges as border edges and winds around it), found with
 `boost::dijkstra_shortest_paths_no_init()` on the mesh seen as a Boost graph. The search stops at `t`
 and only touches the vertices it visits (for `Polyhedron_3` without ids, building the vertex index map
 costs one pass over the vertices).

@@ -208,11 +208,12 @@ plan_qzip(const PolygonMesh& pm,
 
   // every vertex the chain operates on is a path vertex or one of its neighbours: keep the path
   // away from the border (collapses of border faces) and from features and protected faces.
+  // (faces that are not quads may be next to the path: no collapse is ever attempted on them, splits
+  // keep their degree, and the executor checks every operation)
   for(vertex_descriptor v : plan.path)
     for(auto h : halfedges_around_target(halfedge(v, pm), pm))
     {
-      if(is_border_edge(h, pm) || get(ecm, edge(h, pm)) ||
-         (!is_border(h, pm) && get(fcm, face(h, pm))))
+      if(is_border_edge(h, pm) || get(ecm, edge(h, pm)) || get(fcm, face(h, pm)))
       { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
     }
   plan.status = Plan_status::REALIZABLE;

@@ -42,9 +42,9 @@ must not edit the mesh. A user functor can replace this one or extend it by call
 struct Default_scoring
 {
   double electric_weight = 1.;    ///< weight of `Electric_term`
-  double isotropy_weight = 0.1;   ///< weight of `Isotropy_term`
-  double sizing_weight = 0.1;     ///< weight of `Sizing_term`
-  double separatrix_weight = 0.1; ///< weight of `Separatrix_term`
+  double isotropy_weight = 0.02;  ///< weight of `Isotropy_term`
+  double sizing_weight = 0.02;    ///< weight of `Sizing_term`
+  double separatrix_weight = 0.02;///< weight of `Separatrix_term`
   Electric_term electric;         ///< the electric term and its parameters
   Isotropy_term isotropy;         ///< the isotropy term
   Sizing_term sizing;             ///< the sizing term

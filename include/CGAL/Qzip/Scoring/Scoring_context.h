@@ -133,11 +133,16 @@ public:
       put(stamp, v, 0u);
       for(Slot& sl : slots) put(sl.stamp, v, 0u);
     }
-    double area = 0;
+    // geometric mean: the log-ratios of the sizing term then average to zero over the input
+    double log_area = 0;
     std::size_t n = 0;
-    for(face_descriptor f : faces(pm)) { area += face_area(f); ++n; }
-    m_mean_face_area = n > 0 ? area / double(n) : 1.;
-    if(!(m_mean_face_area > 0)) m_mean_face_area = 1.;
+    for(face_descriptor f : faces(pm))
+    {
+      const double a = face_area(f);
+      if(a > 0) { log_area += std::log(a); ++n; }
+    }
+    m_mean_face_area = n > 0 ? std::exp(log_area / double(n)) : 1.;
+    if(!(m_mean_face_area > 0) || !std::isfinite(m_mean_face_area)) m_mean_face_area = 1.;
   }
 
   // refreshes everything; returns the singular vertices (in the order of vertices(pm)).
@@ -213,7 +218,7 @@ public:
       if(!is_border(h, pm) && get(fcm, face(h, pm))) return true;
     return false;
   }
-  /// the mean area of the faces of the mesh given to the optimizer (the uniform target size).
+  /// the geometric mean of the areas of the faces of the mesh given to the optimizer (the uniform target size).
   double mean_face_area() const { return m_mean_face_area; }
 
   /// the area of face `f` (half the norm of the sum of the cross products of a fan).

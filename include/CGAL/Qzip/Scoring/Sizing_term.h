@@ -23,7 +23,7 @@ namespace Qzip {
 
 The uniform sizing control of the paper's Sec. 4.1: no collapse where quads are already large, no
 split where they are already small. For each operation of the plan, with `a` the area of the quad it
-acts on (see `Isotropy_term`) divided by the mean face area of the input, the term adds `log(a)` for
+acts on (see `Isotropy_term`) divided by the geometric mean of the face areas of the input, the term adds `log(a)` for
 a collapse and `-log(a)` for a split. Only the plan is used.
 */
 struct Sizing_term

@@ -44,6 +44,7 @@ struct Optimizer_settings
   double face_count_tolerance = 0.1;
   unsigned int seed = 0;
   std::size_t neighbors_per_type = 3;
+  double quality_floor = 0.1;
 };
 
 // The multiple-choice batches of the paper's Sec. 4.1 (see optimize_singularities()).
@@ -100,6 +101,7 @@ public:
       scar_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       search_pred(get(CGAL::dynamic_vertex_property_t<vertex_descriptor>(), pm))
   {
+    smoother.quality_floor = settings.quality_floor;
     for(vertex_descriptor v : vertices(pm))
     {
       put(search_stamp, v, 0u);
@@ -189,19 +191,24 @@ private:
     for(vertex_descriptor v : region) put(op_stamp, v, batch_epoch);
   }
 
-  std::size_t count_inverted(const std::vector<vertex_descriptor>& region) const
+  // the number of inverted quads (scaled Jacobian <= 0) incident to the vertices of `region`, and the
+  // smallest scaled Jacobian among these quads (1 if none)
+  std::pair<std::size_t, double> quality(const std::vector<vertex_descriptor>& region) const
   {
     std::unordered_set<face_descriptor, boost::hash<face_descriptor> > seen;
     std::size_t n = 0;
+    double q = 1;
     for(vertex_descriptor v : region)
       for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
       {
         if(is_border(h, pm) || !is_quad(h, pm)) continue;
         const face_descriptor f = face(h, pm);
         if(!seen.insert(f).second) continue;
-        if(quad_scaled_jacobian(f, pm, CGAL::parameters::vertex_point_map(vpm)) <= 0) ++n;
+        const double j = quad_scaled_jacobian(f, pm, CGAL::parameters::vertex_point_map(vpm));
+        if(j <= 0) ++n;
+        q = (std::min)(q, j);
       }
-    return n;
+    return std::make_pair(n, q);
   }
 
   std::size_t count_singularities_now() const
@@ -340,7 +347,7 @@ private:
       if(get(op_stamp, v) == batch_epoch) { ++stats.number_of_skipped_surgeries; return; }
     mark(ball(plan.path, 3));
 
-    const std::size_t inverted_before = count_inverted(ball(plan.path, 2));
+    const std::pair<std::size_t, double> before = quality(ball(plan.path, 2));
 #ifdef CGAL_QZIP_OPTIMIZER_MEASURE_PREDICTIONS
     const std::size_t singular_before = count_singularities_now();
 #endif
@@ -354,7 +361,10 @@ private:
     saved.reserve(scar.size());
     for(vertex_descriptor v : scar) saved.push_back(get(vpm, v));
     if(settings.smooth) smoother.smooth(scar, settings.smoothing_iterations);
-    if(count_inverted(scar) > inverted_before)
+    // never worse: no more inverted quads than before, and no quad worse than the worst one before
+    // unless it stays above the quality floor
+    const std::pair<std::size_t, double> after = quality(scar);
+    if(after.first > before.first || after.second < (std::min)(before.second, settings.quality_floor))
     {
       for(std::size_t i = 0; i < scar.size(); ++i) put(vpm, scar[i], saved[i]);
       undo_qzip(history);
