@@ -15,6 +15,7 @@
 #include <CGAL/Random.h>
 #include <CGAL/Qzip/preprocess.h>
 #include <CGAL/Qzip/qzip.h>
+#include <CGAL/Qzip/singularities.h>
 
 #include <cstdlib>
 #include <deque>
@@ -40,7 +41,7 @@ Singularity_count count_singularities(const Mesh& m)
   for(Vertex v : vertices(m))
   {
     if(CGAL::is_border(v, m)) continue;
-    const std::size_t d = Q::internal::valence(v, m);
+    const std::size_t d = Q::vertex_valence(v, m);
     if(d == 3) ++c.v3;
     else if(d == 5) ++c.v5;
   }
@@ -49,7 +50,7 @@ Singularity_count count_singularities(const Mesh& m)
 
 bool is_singular(Vertex v, const Mesh& m)
 {
-  const std::size_t d = Q::internal::valence(v, m);
+  const std::size_t d = Q::vertex_valence(v, m);
   return !CGAL::is_border(v, m) && (d == 3 || d == 5);
 }
 

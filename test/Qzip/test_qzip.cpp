@@ -198,7 +198,13 @@ void test_planted_pairs(Counters& c)
             if(!plan.is_realizable()) { ++c.refused; continue; }
             Q::Qzip_history<Mesh> history(w);
             const auto r = Q::execute_qzip(w, plan, history);
-            if(!r.is_done()) { ++c.rolled_back; assert(are_isomorphic(w, m) && sorted_points(w) == sorted_points(m)); continue; }
+            if(!r.is_done())
+            {
+              ++c.rolled_back;
+              assert(r.failure != Q::Execution_failure::NONE && r.failed_step + 1 < plan.path.size());
+              assert(are_isomorphic(w, m) && sorted_points(w) == sorted_points(m));
+              continue;
+            }
             const std::size_t located = c.located;
             check_done(w, before, r, c);
             if(c.located > located)
@@ -395,6 +401,7 @@ std::size_t random_qzips(Mesh& m, std::size_t count, unsigned seed, Counters& c)
     if(!r.is_done())
     {
       ++c.rolled_back;
+      assert(r.failure != Q::Execution_failure::NONE);
       assert(history.size() == recorded);
       assert(CGAL::is_valid_polygon_mesh(m) && singular_valences(m) == before.singular);
       continue;

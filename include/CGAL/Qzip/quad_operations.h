@@ -64,11 +64,11 @@ void collect_neighbors(typename boost::graph_traits<PolygonMesh>::vertex_descrip
 \ingroup PkgQzipAtomicOperations
 
 checks whether `quad_collapse(h, pm)` can be applied without breaking the mesh: `face(h, pm)` must be a
-quad with four distinct corners, the kept corner `target(h, pm)` and the removed corner (the opposite one)
+quad with four distinct corners; the kept corner `target(h, pm)` and the removed corner (the opposite one)
 must not be adjacent, must not share a face other than `face(h, pm)` nor a neighbor other than the two
-remaining corners, must not both lie on the border, and the two remaining corners must keep at least
-two incident edges (three if they are interior, so that no valence-2 interior vertex appears unless
-one was there before on the same side).
+remaining corners, and must not both lie on the border; the two remaining corners must keep at least two
+incident edges (an interior corner of valence 3 may become a valence-2 vertex: the Q-zip clean-up and
+the preprocessing remove those).
 
 \tparam PolygonMesh a model of `FaceGraph`
 \param h a halfedge whose face is not the border face

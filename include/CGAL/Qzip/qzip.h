@@ -47,10 +47,14 @@ struct Qzip_result
   /// the moved initial and terminal singularities, when they can be told apart from the other
   /// singular vertices of the scar (`null_vertex()` otherwise, e.g. when a passed singularity moved too)
   vertex_descriptor moved_source = boost::graph_traits<PolygonMesh>::null_vertex();
+  /// see `moved_source`
   vertex_descriptor moved_target = boost::graph_traits<PolygonMesh>::null_vertex();
   std::vector<face_descriptor> scar_faces;         ///< quads created by the surgery and still alive
   std::vector<vertex_descriptor> touched_vertices; ///< live vertices whose neighbourhood or position changed
+  Execution_failure failure = Execution_failure::NONE; ///< why the execution was rolled back, if it was
+  std::size_t failed_step = 0;                     ///< index in `plan.path` of the vertex where it was
 
+  /// `true` when the Q-zip was carried out.
   bool is_done() const { return status == Plan_status::REALIZABLE; }
 };
 
@@ -99,8 +103,9 @@ introducing two v5).
 
 Every operation is checked before it is applied (link condition, border, constrained edges and
 protected faces); afterwards the valences of every vertex the surgery touched are compared with the
-ones before: the multiset of irregular valences must be unchanged and no border vertex may change
-valence. If an operation cannot be applied or the check fails, everything done is rolled back and
+ones before: the irregular valences after must form a sub-multiset of those before (no singularity is
+created; a path passing other singularities may cancel complementary pairs of them) and no border
+vertex may change valence. If an operation cannot be applied or the check fails, everything done is rolled back and
 the mesh is combinatorially and geometrically as before (re-created elements may have new descriptors).
 
 \tparam PolygonMesh a model of `MutableFaceGraph`

@@ -62,11 +62,41 @@ enum class Plan_status
   REALIZABLE,            ///< the plan can be executed
   INVALID_PATH,          ///< the path is not a simple edge path of at least one edge
   UNSUPPORTED_ENDPOINT,  ///< an end of the path is not an interior vertex of valence 3 or 5
-  ENDPOINT_ADJUSTMENT,   ///< an end-point adjustment needs a vertex that is singular, on the border, or constrained
+  ENDPOINT_ADJUSTMENT,   ///< an end-point adjustment needs a vertex on the border
   NOT_SIMPLE_AFTER_ADJUSTMENT, ///< the adjusted path is not simple
   BORDER_OR_CONSTRAINED, ///< an operation would touch the border, a constrained edge or a protected face, or collapse a non-quad face
   EXECUTION_FAILED       ///< the chain could not be completed (a quad would degenerate, a link condition fails) or left a new singularity; the mesh was restored
 };
+
+/// \ingroup PkgQzipPrimitive
+/// Why the execution of a realizable plan was rolled back (`Plan_status::EXECUTION_FAILED`).
+enum class Execution_failure
+{
+  NONE,                 ///< not rolled back
+  PATH_EDGE_MISSING,    ///< an edge of the path disappeared on the way
+  COLLAPSE_REFUSED,     ///< a collapse would break the mesh (link condition, border, feature, protected face, not a quad)
+  SPLIT_REFUSED,        ///< a split would touch a feature or a protected face
+  NO_GUIDE_FOR_SPLIT,   ///< a split has no guide edge distinct from the next path edge
+  CLEANUP_IMPOSSIBLE,   ///< a valence-2 or valence-6 vertex left by the chain could not be cleaned up
+  SINGULARITY_CREATED   ///< the chain completed but created a singularity or changed the border
+};
+
+/// \ingroup PkgQzipPrimitive
+/// a human-readable description of an `Execution_failure`.
+inline const char* describe(Execution_failure f)
+{
+  switch(f)
+  {
+    case Execution_failure::NONE: return "none";
+    case Execution_failure::PATH_EDGE_MISSING: return "an edge of the path disappeared";
+    case Execution_failure::COLLAPSE_REFUSED: return "a collapse was refused";
+    case Execution_failure::SPLIT_REFUSED: return "a split was refused";
+    case Execution_failure::NO_GUIDE_FOR_SPLIT: return "a split had no guide edge";
+    case Execution_failure::CLEANUP_IMPOSSIBLE: return "the valence-2/6 clean-up was impossible";
+    case Execution_failure::SINGULARITY_CREATED: return "the chain would have created a singularity";
+  }
+  return "";
+}
 
 /// \ingroup PkgQzipPrimitive
 /// a human-readable description of a `Plan_status`.
@@ -77,7 +107,7 @@ inline const char* describe(Plan_status s)
     case Plan_status::REALIZABLE: return "realizable";
     case Plan_status::INVALID_PATH: return "invalid path";
     case Plan_status::UNSUPPORTED_ENDPOINT: return "an end is not an interior valence-3 or valence-5 vertex";
-    case Plan_status::ENDPOINT_ADJUSTMENT: return "the end-point adjustment needs a singular, border or constrained vertex";
+    case Plan_status::ENDPOINT_ADJUSTMENT: return "the end-point adjustment needs a border vertex";
     case Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT: return "the adjusted path is not simple";
     case Plan_status::BORDER_OR_CONSTRAINED: return "an operation would touch the border, a feature or a protected face, or collapse a non-quad face";
     case Plan_status::EXECUTION_FAILED: return "the chain of operations could not be completed";

@@ -78,9 +78,10 @@ bool is_passable(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
 
 computes a surgery path (paper, Sec. 2.4): a shortest simple edge path from `s` to `t` whose inner
 vertices are interior vertices incident only to quads that are not protected, and to no constrained
-edge (a path meeting a triangle treats its edges as border edges and winds around it), found with
-`boost::dijkstra_shortest_paths_no_init()` on the mesh seen as a Boost graph. The search stops at `t`
-and only touches the vertices it visits (for `Polyhedron_3` without ids, building the vertex index map
+edge (a path meeting a triangle treats its edges as border edges and winds around it), found on the
+mesh seen as a Boost graph with `boost::breadth_first_visit()` (unit weights: the fewest edges, hence the
+fewest operations) or, with `edge_weight_map`, `boost::dijkstra_shortest_paths_no_init()`. The search
+stops at `t` and only touches the vertices it visits (for `Polyhedron_3` without ids, building the vertex index map
 costs one pass over the vertices).
 
 \tparam PolygonMesh a model of `FaceGraph` and of `boost::IncidenceGraph`

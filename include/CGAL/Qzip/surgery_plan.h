@@ -33,7 +33,8 @@ namespace Qzip {
 A Q-zip surgery plan: plain data, computed without touching the mesh by `plan_qzip()`.
 
 `path` is the adjusted surgery path (after the end-point preparation of the paper's Sec. 2.6) and
-`operations[i]` the strip operation performed at `path[i]` on the way to `path[i+1]`.
+`operations[i]` the strip operation performed at `path[i]` on the way to `path[i+1]`; `operations` has
+one entry per vertex of `path`, the last one being `NO_OPERATION`.
 */
 template <typename PolygonMesh>
 struct Surgery_plan
@@ -47,12 +48,15 @@ struct Surgery_plan
   Strip_operation initial_operation = Strip_operation::LEFT_SPLIT; ///< the motion: the compass at the source
   std::vector<vertex_descriptor> sketch;     ///< the path given to the planner, from `source` to `target`
   std::vector<vertex_descriptor> path;       ///< the adjusted path the surgery follows
-  std::vector<Strip_operation> operations;   ///< one per vertex of `path` but the last
-  Plan_status status = Plan_status::INVALID_PATH;
+  std::vector<Strip_operation> operations;   ///< one per vertex of `path`, the last is `NO_OPERATION`
+  Plan_status status = Plan_status::INVALID_PATH; ///< whether the plan is realizable, or why not
 
+  /// `true` when `status` is `REALIZABLE`.
   bool is_realizable() const { return status == Plan_status::REALIZABLE; }
+  /// the number of quad collapses the chain performs (before any clean-up).
   std::size_t number_of_collapses() const
   { std::size_t n = 0; for(Strip_operation op : operations) if(is_collapse(op)) ++n; return n; }
+  /// the number of vertex splits the chain performs (before any clean-up).
   std::size_t number_of_splits() const
   { std::size_t n = 0; for(Strip_operation op : operations) if(is_split(op)) ++n; return n; }
 };

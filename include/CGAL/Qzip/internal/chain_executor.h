@@ -96,18 +96,14 @@ public:
     const Point source_at = get(log_vpm(), plan.source), target_at = get(log_vpm(), plan.target);
     visitor.on_qzip_started(plan);
     log.mark();
-    const bool chain_ok = run_chain(plan);
-    const bool clean_ok = chain_ok && clean_up();
-    const bool valences_ok = clean_ok && valences_preserved();
-#ifdef CGAL_QZIP_VERBOSE
-    for(const auto& kv : before)
-      if(alive.count(kv.first) && int(valence(kv.first, pm)) != kv.second.valence)
-        std::cerr << "   " << kv.first << ": " << kv.second.valence << " -> " << valence(kv.first, pm) << "\n";
-    for(vertex_descriptor v : created) if(alive.count(v)) std::cerr << "   new " << v << ": " << valence(v, pm) << "\n";
-    std::cerr << "qzip: chain " << chain_ok << " cleanup " << clean_ok << " valences " << valences_ok << "\n";
-#endif
-    if(!valences_ok)
+    Execution_failure failure = Execution_failure::NONE;
+    if(!run_chain(plan, failure)) {}
+    else if(!clean_up()) failure = Execution_failure::CLEANUP_IMPOSSIBLE;
+    else if(!valences_preserved()) failure = Execution_failure::SINGULARITY_CREATED;
+    if(failure != Execution_failure::NONE)
     {
+      r.failure = failure;
+      r.failed_step = failed_step;
       log.rollback_to_mark();
       r.status = Plan_status::EXECUTION_FAILED;
       visitor.on_qzip_finished(plan, false);
@@ -177,21 +173,14 @@ private:
     return true;
   }
 
-  bool run_chain(const Surgery_plan<PolygonMesh>& plan)
+  bool run_chain(const Surgery_plan<PolygonMesh>& plan, Execution_failure& failure)
   {
     halfedge_descriptor guide = GT::null_halfedge();
     for(std::size_t j = 0; j + 1 < plan.path.size(); ++j)
     {
-#ifdef CGAL_QZIP_VERBOSE
-      std::cerr << "  step " << j << " at " << plan.path[j] << " (valence " << valence(plan.path[j], pm) << ") "
-                << short_name(plan.operations[j]) << " -> " << plan.path[j + 1];
-      if(guide != GT::null_halfedge() && halfedge(plan.path[j], plan.path[j + 1], pm).second)
-        std::cerr << " guide k=" << ccw_steps(halfedge(plan.path[j], plan.path[j + 1], pm).first, guide, pm)
-                  << " y valence " << valence(target(guide, pm), pm);
-      std::cerr << "\n";
-#endif
+      failed_step = j;
       const auto vw = halfedge(plan.path[j], plan.path[j + 1], pm);
-      if(!vw.second) return false;
+      if(!vw.second) { failure = Execution_failure::PATH_EDGE_MISSING; return false; }
       const halfedge_descriptor o = vw.first;
       // a collapse may not remove a vertex the path has still to visit (e.g. on a cube, where the path
       // can run along two sides of the collapsed quad): its descriptor would dangle
@@ -206,18 +195,21 @@ private:
           guide = opposite(o, pm);
           break;
         case Strip_operation::RIGHT_COLLAPSE:
-          if(is_border(o, pm) || removes_path_vertex(o) || !collapse(o)) return false;
+          if(is_border(o, pm) || removes_path_vertex(o) || !collapse(o))
+          { failure = Execution_failure::COLLAPSE_REFUSED; return false; }
           guide = opposite(last_delimiters.first, pm);
           break;
         case Strip_operation::LEFT_COLLAPSE:
           if(is_border(opposite(o, pm), pm) || removes_path_vertex(prev(opposite(o, pm), pm)) ||
-             !collapse(prev(opposite(o, pm), pm))) return false;
+             !collapse(prev(opposite(o, pm), pm)))
+          { failure = Execution_failure::COLLAPSE_REFUSED; return false; }
           guide = opposite(last_delimiters.second, pm);
           break;
         case Strip_operation::LEFT_SPLIT:
         case Strip_operation::RIGHT_SPLIT:
-          if(guide == GT::null_halfedge() || guide == o || source(guide, pm) != plan.path[j]) return false;
-          if(!split(opposite(o, pm), opposite(guide, pm))) return false;
+          if(guide == GT::null_halfedge() || guide == o || source(guide, pm) != plan.path[j])
+          { failure = Execution_failure::NO_GUIDE_FOR_SPLIT; return false; }
+          if(!split(opposite(o, pm), opposite(guide, pm))) { failure = Execution_failure::SPLIT_REFUSED; return false; }
           guide = plan.operations[j] == Strip_operation::LEFT_SPLIT ? next(next(last_quad, pm), pm)
                                                                     : opposite(o, pm);
           break;
@@ -324,6 +316,7 @@ private:
 
   Split_delimiters<PolygonMesh> last_delimiters;
   halfedge_descriptor last_quad;
+  std::size_t failed_step = 0;
 };
 
 } // namespace internal
