@@ -3,6 +3,7 @@
 
 #include <CGAL/Qzip/quad_operations.h>
 #include <CGAL/Qzip/preprocess.h>
+#include <CGAL/Qzip/singularities.h>
 
 #include <CGAL/Random.h>
 
@@ -267,6 +268,8 @@ void check_preprocess(Mesh& m, const char* what)
   assert(CGAL::is_valid_polygon_mesh(m));
   assert(euler_characteristic(m) == chi);
   assert(count_bad_interior_valences(m) == 0);
+  for(auto v : vertices(m))
+    if(on_border(v, m)) assert(Q::vertex_defect(v, m) < 2);
   std::map<std::size_t, std::size_t> after;
   for(auto f : faces(m)) ++after[CGAL::halfedges_around_face(halfedge(f, m), m).size()];
   assert(after[4] == degrees[4] + r.vertex_splits - r.removed_valence_2);
@@ -291,6 +294,20 @@ void test_preprocess_synthetic()
     }
   assert(count_bad_interior_valences(g) > 0);
   check_preprocess(g, "grid with a valence-2 vertex");
+  // a border vertex with four quads on a straight border (defect +2): merge an interior corner into it
+  {
+    Mesh b; make_quad_grid(b, 6, 6);
+    bool planted = false;
+    for(auto h : halfedges(b))
+      if(!is_border(h, b) && get(CGAL::vertex_point, b, target(h, b)) == Point(3, 0, 0) &&
+         get(CGAL::vertex_point, b, target(next(next(h, b), b), b)) == Point(4, 1, 0))
+      { Q::quad_collapse(h, b); planted = true; break; }
+    assert(planted);
+    std::size_t border_plus_2 = 0;
+    for(auto v : vertices(b)) if(on_border(v, b) && Q::vertex_defect(v, b) >= 2) ++border_plus_2;
+    assert(border_plus_2 == 1);
+    check_preprocess(b, "grid with a border defect of +2");
+  }
   // valence 6 to 10: merge quads around one vertex of a torus
   for(int merges = 1; merges <= 4; ++merges)
   {

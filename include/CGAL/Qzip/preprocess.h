@@ -11,6 +11,7 @@
 #include <CGAL/license/Qzip.h>
 
 #include <CGAL/Qzip/quad_operations.h>
+#include <CGAL/Qzip/singularities.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -30,7 +31,7 @@ struct Preprocess_result
 {
   std::size_t removed_valence_2 = 0;   ///< interior valence-2 vertices removed (one quad collapse each)
   std::size_t vertex_splits = 0;       ///< vertex splits performed on vertices of valence 6 or more
-  bool converged = true;               ///< no interior vertex of valence 2 or >= 6 is left (unless frozen)
+  bool converged = true;               ///< no vertex is left to fix (interior valence 2 or >= 6, border defect >= 2)
 };
 
 namespace internal {
@@ -78,10 +79,11 @@ bool remove_valence_2_vertex(typename boost::graph_traits<PolygonMesh>::vertex_d
 
 // splits the high-valence vertex `v` once: the new vertex takes a fan of k edges, chosen so that the two
 // copies are as regular as possible and the two delimiting neighbours (which gain one edge) are the
-// least loaded ones.
+// least loaded ones. A border vertex (`border_defect` is its defect) keeps the border: the fan of the
+// new, interior vertex contains no border face, and k is chosen to bring the defect closest to 0.
 template <typename PolygonMesh, typename VPM>
 bool split_high_valence_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
-                               PolygonMesh& pm, VPM vpm)
+                               PolygonMesh& pm, VPM vpm, bool border = false, int border_defect = 0)
 {
   typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
@@ -97,10 +99,19 @@ bool split_high_valence_vertex(typename boost::graph_traits<PolygonMesh>::vertex
       // so the second delimiter is k+1 steps back in `in`.
       const halfedge_descriptor h1 = in[i], h2 = in[(i - (k + 1) + 2 * deg) % deg];
       if(!can_split_vertex_into_quad(h1, h2, pm)) continue;
+      if(border)
+      {
+        bool interior_fan = true;
+        halfedge_descriptor o = opposite(h1, pm);
+        for(int f = 0; f <= k; ++f, o = opposite(prev(o, pm), pm))
+          if(is_border(o, pm)) interior_fan = false;
+        if(!interior_fan) continue;
+      }
       const long dc = k + 2, dv = deg - k;
       const long db = long(valence(source(h1, pm), pm)) + 1, dd = long(valence(source(h2, pm), pm)) + 1;
       auto irr = [](long d) { return d == 4 ? 0L : (d >= 6 || d <= 2 ? 100L * (d > 4 ? d - 4 : 4 - d) : 1L); };
-      const long cost = 10 * (irr(dc) + irr(dv)) + irr(db) + irr(dd);
+      const long v_cost = border ? 10L * std::abs(long(border_defect) - k) : irr(dv);
+      const long cost = 10 * (irr(dc) + v_cost) + irr(db) + irr(dd);
       if(cost < best_cost) { best_cost = cost; best1 = h1; best2 = h2; }
     }
   if(best1 == best2) return false;
@@ -125,8 +136,11 @@ interior valence-2 vertices are removed by collapsing one of their two quads (th
 one edge each), and interior vertices of valence 6 or more are split into two vertices joined by a new
 quad until every copy has valence at most 5. The operations are repeated until nothing is left to do.
 Only quad collapses and vertex splits are used, so no face changes its degree and the Euler
-characteristic is preserved. Vertices on the border or on a constrained edge are left untouched: their
-defects are measured against their angles (`vertex_defect()`) and handled by the Q-zip pairing.
+characteristic is preserved. Vertices on a constrained edge are left untouched. A border vertex whose
+defect (measured against its angle, `vertex_defect()`) is 2 or more is split likewise, the new vertex
+taking a fan of interior faces, so that the border keeps its vertices and the defect drops; border
+defects of -1 and +1 are left to the Q-zip pairing, and negative border defects of -2 or less (a
+reflex corner with a single quad) are not changed.
 
 New vertices are placed a third of the way from the split vertex towards the centroid of their neighbours.
 
@@ -144,7 +158,8 @@ New vertices are placed a third of the way from the split vertex towards the cen
     \cgalParamDefault{no edge is constrained}
   \cgalParamNEnd
 \cgalNamedParamsEnd
-\returns the numbers of operations performed and whether every interior free vertex has valence 3 to 5.
+\returns the numbers of operations performed and whether every interior free vertex has valence 3 to 5
+and every free border vertex a defect below 2.
 */
 template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
 Preprocess_result preprocess_valences(PolygonMesh& pm, const NamedParameters& np = parameters::default_values())
@@ -159,6 +174,21 @@ Preprocess_result preprocess_valences(PolygonMesh& pm, const NamedParameters& np
                               Static_boolean_property_map<edge_descriptor, false>());
   typedef decltype(vpm) VPM;
 
+  enum Action { NOTHING, REMOVE_VALENCE_2, SPLIT_INTERIOR, SPLIT_BORDER };
+  auto defect_of = [&](vertex_descriptor v)
+  { return vertex_defect(v, pm, CGAL::parameters::vertex_point_map(vpm).edge_is_constrained_map(ecm)); };
+  auto action = [&](vertex_descriptor v) -> Action
+  {
+    if(halfedge(v, pm) == boost::graph_traits<PolygonMesh>::null_halfedge()) return NOTHING;
+    const std::size_t d = internal::valence(v, pm);
+    if(internal::is_free_interior_vertex<PolygonMesh, VPM>(v, pm, ecm))
+      return d == 2 ? REMOVE_VALENCE_2 : (d >= 6 ? SPLIT_INTERIOR : NOTHING);
+    bool constrained = false;
+    for(auto h : halfedges_around_target(halfedge(v, pm), pm)) if(get(ecm, edge(h, pm))) constrained = true;
+    if(constrained || !is_border(v, pm) || d < 4) return NOTHING;
+    return defect_of(v) >= 2 ? SPLIT_BORDER : NOTHING;
+  };
+
   Preprocess_result result;
   // each pass handles every offending vertex once; a split may push a neighbour to 6, handled next pass.
   const std::size_t max_passes = 64;
@@ -166,29 +196,31 @@ Preprocess_result preprocess_valences(PolygonMesh& pm, const NamedParameters& np
   {
     std::vector<vertex_descriptor> todo;
     for(vertex_descriptor v : vertices(pm))
-    {
-      if(halfedge(v, pm) == boost::graph_traits<PolygonMesh>::null_halfedge()) continue;
-      const std::size_t d = internal::valence(v, pm);
-      if((d == 2 || d >= 6) && internal::is_free_interior_vertex<PolygonMesh, VPM>(v, pm, ecm)) todo.push_back(v);
-    }
+      if(action(v) != NOTHING) todo.push_back(v);
     if(todo.empty()) { result.converged = true; return result; }
     bool progress = false;
     for(vertex_descriptor v : todo)
     {
-      const std::size_t d = internal::valence(v, pm);
-      if(!internal::is_free_interior_vertex<PolygonMesh, VPM>(v, pm, ecm)) continue;
-      if(d == 2 && internal::remove_valence_2_vertex(v, pm)) { ++result.removed_valence_2; progress = true; }
-      else if(d >= 6 && internal::split_high_valence_vertex(v, pm, vpm)) { ++result.vertex_splits; progress = true; }
+      switch(action(v))
+      {
+        case REMOVE_VALENCE_2:
+          if(internal::remove_valence_2_vertex(v, pm)) { ++result.removed_valence_2; progress = true; }
+          break;
+        case SPLIT_INTERIOR:
+          if(internal::split_high_valence_vertex(v, pm, vpm)) { ++result.vertex_splits; progress = true; }
+          break;
+        case SPLIT_BORDER:
+          if(internal::split_high_valence_vertex(v, pm, vpm, true, defect_of(v))) { ++result.vertex_splits; progress = true; }
+          break;
+        case NOTHING:
+          break;
+      }
     }
     if(!progress) break;
   }
-  result.converged = false;
-  for(vertex_descriptor v : vertices(pm))
-  {
-    const std::size_t d = internal::valence(v, pm);
-    if((d == 2 || d >= 6) && internal::is_free_interior_vertex<PolygonMesh, VPM>(v, pm, ecm)) return result;
-  }
   result.converged = true;
+  for(vertex_descriptor v : vertices(pm))
+    if(action(v) != NOTHING) result.converged = false;
   return result;
 }
 
