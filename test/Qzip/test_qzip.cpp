@@ -175,13 +175,19 @@ void plant_chain(Mesh& m, int n, int row, int col, int k, bool along_rows)
 /// every ordered pair of the planted singularities, four motions each: invariants, the moved pair within
 /// one edge of where it was (positions of a planar grid as a proxy), exact undo.
 template <typename Mesh>
-void test_planted_pairs(Counters& c)
+void test_planted_pairs(Counters& c, std::size_t& longest)
 {
-  for(int k : { 2, 3, 6, 11 })
+  struct Layout { int n, row, col, k; };
+  // short and long chains in the middle of the grid (pairs at distance 1 to 46), and chains next to the
+  // border (row 2: the paths run one quad away from it)
+  const Layout layouts[] = { {30, 12, 8, 2}, {30, 12, 8, 3}, {30, 12, 8, 6}, {30, 12, 8, 11}, {56, 20, 4, 45},
+                             {30, 2, 8, 5}, {30, 2, 8, 12} };
+  for(const Layout& layout : layouts)
     for(bool rows : { true, false })
     {
       Mesh m;
-      plant_chain(m, 30, 12, 8, k, rows);
+      plant_chain(m, layout.n, layout.row, layout.col, layout.k, rows);
+      const int k = layout.k;
       const auto sing = singular_vertices(m);
       assert(sing.size() == 4);
       for(std::size_t i = 0; i < sing.size(); ++i)
@@ -194,6 +200,7 @@ void test_planted_pairs(Counters& c)
             const Snapshot<Mesh> before(w);
             const auto path = Q::shortest_surgery_path(w, s, t);
             assert(!path.empty() && path.front() == s && path.back() == t);
+            longest = (std::max)(longest, path.size() - 1);
             const auto plan = Q::plan_qzip(w, path, Q::Strip_operation(mo));
             if(!plan.is_realizable()) { ++c.refused; continue; }
             Q::Qzip_history<Mesh> history(w);
@@ -538,10 +545,13 @@ int main(int argc, char** argv)
   const std::size_t per_mesh = argc > 1 ? std::size_t(std::atoi(argv[1])) : 150;
 
   Counters planted_sm, planted_ph;
-  test_planted_pairs<Surface_mesh>(planted_sm);
+  std::size_t longest = 0;
+  test_planted_pairs<Surface_mesh>(planted_sm, longest);
   planted_sm.print("planted pairs, Surface_mesh");
-  test_planted_pairs<Polyhedron>(planted_ph);
+  test_planted_pairs<Polyhedron>(planted_ph, longest);
   planted_ph.print("planted pairs, Polyhedron_3");
+  std::cout << "  longest planted path: " << longest << " edges" << std::endl;
+  assert(longest >= 45);
   assert(planted_sm.done > 0 && planted_sm.located > 0);
   assert(planted_sm.done == planted_ph.done && planted_sm.located == planted_ph.located);
 
@@ -575,7 +585,7 @@ int main(int argc, char** argv)
     for(const std::string& f : shared_corpus_files())
     {
       if(f == "trimesh_quadknot.obj") continue; // no singularity at all
-      run_corpus_file<Surface_mesh>(dir + "/" + f, per_mesh / 3, 11, shared);
+      run_corpus_file<Surface_mesh>(dir + "/" + f, per_mesh * 2 / 3, 11, shared);
     }
     shared.print("random Q-zips on the shared corpus, Surface_mesh");
   }
