@@ -460,6 +460,17 @@ void test_refusals_and_parameters()
     assert(Q::plan_qzip(m, regular_end, Q::Strip_operation::LEFT_SPLIT).status == Q::Plan_status::UNSUPPORTED_ENDPOINT);
   assert(Q::shortest_surgery_path(m, s, s).empty());
 
+  // edge weights: making the edges around the shortest path's middle vertex expensive moves the path away
+  {
+    std::map<edge_descriptor, double> weights;
+    for(auto e : edges(m)) weights[e] = 1.;
+    for(auto h : CGAL::halfedges_around_target(halfedge(path[path.size() / 2], m), m)) weights[edge(h, m)] = 100.;
+    const auto weighted = Q::shortest_surgery_path(m, s, t, Q::parameters::edge_weight_map(boost::make_assoc_property_map(weights)));
+    assert(weighted.front() == s && weighted.back() == t && weighted.size() >= path.size());
+    assert(std::find(weighted.begin(), weighted.end(), path[path.size() / 2]) == weighted.end());
+    for(std::size_t i = 0; i + 1 < weighted.size(); ++i) assert(halfedge(weighted[i], weighted[i + 1], m).second);
+  }
+
   // a protected face on the path: the planner refuses the path, the search goes around
   std::set<face_descriptor> protected_faces;
   for(auto h : CGAL::halfedges_around_target(halfedge(path[5], m), m))
