@@ -15,16 +15,22 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 
 #include <boost/graph/graph_traits.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <new>
+#include <stdexcept>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -43,6 +49,83 @@ inline bool same_file(const std::string& a, const std::string& b)
   if(::stat(a.c_str(), &sa) != 0 || ::stat(b.c_str(), &sb) != 0)
     return false;
   return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+/// Checks that the element counts an OFF or PLY header declares fit in the file: every element takes at
+/// least one byte, so a count larger than the file size is a lie. CGAL's readers reserve memory for the
+/// declared counts before reading, which fails (`std::bad_alloc`, or an abort under AddressSanitizer) on
+/// absurd counts. Other formats and binary OFF are not checked.
+inline bool declared_counts_fit(const std::string& path, std::uintmax_t file_size, std::string& error)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line, token;
+  auto too_many = [&](double declared)
+  {
+    if(declared <= double(file_size)) return false;
+    error = "cannot read '" + path + "': its header declares more elements than the file can hold";
+    return true;
+  };
+  if(!std::getline(in, line)) return true;
+  std::istringstream first(line);
+  if(!(first >> token)) return true;
+  if(token == "ply")
+  {
+    double total = 0;
+    for(int n = 0; n < 1000 && std::getline(in, line); ++n)
+    {
+      std::istringstream is(line);
+      std::string keyword, name;
+      double count = 0;
+      if(!(is >> keyword)) continue;
+      if(keyword == "end_header") break;
+      if(keyword == "element" && (is >> name >> count)) total += (count > 0 ? count : 0);
+    }
+    return !too_many(total);
+  }
+  if(token.size() < 3 || token.compare(token.size() - 3, 3, "OFF") != 0) return true;
+  std::string rest;
+  std::getline(first, rest);
+  if(rest.find("BINARY") != std::string::npos) return true;
+  // the counts follow the keyword, on its line or on the next line that is not a comment
+  std::istringstream counts(rest);
+  double v = 0, f = 0;
+  while(!(counts >> v >> f))
+  {
+    if(!std::getline(in, line)) return true;
+    if(line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t\r")] == '#') continue;
+    counts.clear();
+    counts.str(line);
+  }
+  return !too_many((v > 0 ? v : 0) + (f > 0 ? f : 0));
+}
+
+/// Checks that every face index of the file refers to an existing vertex. CGAL 5.5's OBJ and PLY readers
+/// do not check the indices (OBJ even turns index 0 and `n + 1` into `n`) and then read past the end of
+/// their vertex array while building the mesh; this check reads the file as a polygon soup first, which
+/// only stores the indices. Returns `true` when the file cannot be read as a soup: then
+/// `CGAL::IO::read_polygon_mesh()` fails on it as well and the caller reports that.
+inline bool face_indices_in_range(const std::string& path, std::string& error)
+{
+  std::vector<CGAL::Simple_cartesian<double>::Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  try
+  {
+    if(!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
+      return true;
+  }
+  catch(const std::exception&)
+  {
+    return true; // e.g. std::bad_alloc on absurd element counts, reported by the caller's read as well
+  }
+  for(const auto& polygon : polygons)
+    for(std::size_t i : polygon)
+      if(i >= points.size())
+      {
+        error = "cannot read '" + path + "': a face refers to a vertex that does not exist (the file has "
+                + std::to_string(points.size()) + " vertices)";
+        return false;
+      }
+  return true;
 }
 
 /// Reads `path` into `mesh` (cleared first) and checks it. Returns `false` with a one-line message in `error`
@@ -72,7 +155,26 @@ bool read_input_mesh(const std::string& path, Mesh& mesh, std::string& error,
     error = "cannot open input '" + path + "': permission denied or unreadable";
     return false;
   }
-  if(!CGAL::IO::read_polygon_mesh(path, mesh))
+  if(!declared_counts_fit(path, std::uintmax_t(st.st_size), error) || !face_indices_in_range(path, error))
+    return false;
+  bool read = false;
+  try
+  {
+    read = CGAL::IO::read_polygon_mesh(path, mesh);
+  }
+  catch(const std::bad_alloc&)
+  {
+    CGAL::clear(mesh);
+    error = "cannot read '" + path + "': it declares more elements than can be allocated";
+    return false;
+  }
+  catch(const std::exception& e)
+  {
+    CGAL::clear(mesh);
+    error = "cannot read '" + path + "': " + e.what();
+    return false;
+  }
+  if(!read)
   {
     CGAL::clear(mesh);
     error = "cannot read '" + path + "' as a polygon mesh (unsupported extension, malformed file, "

@@ -4,6 +4,7 @@
 #include <CGAL/Qzip/quad_operations.h>
 #include <CGAL/Qzip/preprocess.h>
 #include <CGAL/Qzip/singularities.h>
+#include <CGAL/Qzip/quad_quality.h>
 
 #include <CGAL/Random.h>
 
@@ -263,7 +264,18 @@ void check_preprocess(Mesh& m, const char* what)
   std::map<std::size_t, std::size_t> degrees;
   for(auto f : faces(m)) ++degrees[CGAL::halfedges_around_face(halfedge(f, m), m).size()];
   const std::size_t nf = faces(m).size(), bad = count_bad_interior_valences(m);
+  auto inverted = [&m]()
+  {
+    std::size_t n = 0;
+    for(auto f : faces(m))
+      if(CGAL::halfedges_around_face(halfedge(f, m), m).size() == 4 && Q::quad_scaled_jacobian(f, m) <= 0) ++n;
+    return n;
+  };
+  const std::size_t inverted_before = inverted();
   const Q::Preprocess_result r = Q::preprocess_valences(m);
+  const std::size_t inverted_after = inverted();
+  if(inverted_after > inverted_before)
+    std::cout << "  (preprocessing inverted " << inverted_after - inverted_before << " quads)" << std::endl;
   assert(r.converged);
   assert(CGAL::is_valid_polygon_mesh(m));
   assert(euler_characteristic(m) == chi);
@@ -307,6 +319,19 @@ void test_preprocess_synthetic()
     for(auto v : vertices(b)) if(on_border(v, b) && Q::vertex_defect(v, b) >= 2) ++border_plus_2;
     assert(border_plus_2 == 1);
     check_preprocess(b, "grid with a border defect of +2");
+  }
+  // protected faces: their vertices are left alone
+  {
+    Mesh t; make_quad_torus(t, 10, 10);
+    auto v = *vertices(t).begin();
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, t), t))
+      if(Q::can_collapse_quad(h, t)) { Q::quad_collapse(h, t); break; }
+    assert(valence(v, t) == 6);
+    std::set<typename boost::graph_traits<Mesh>::face_descriptor> protect;
+    protect.insert(face(halfedge(v, t), t));
+    const Q::Preprocess_result r =
+      Q::preprocess_valences(t, Q::parameters::face_is_constrained_map(CGAL::Boolean_property_map<decltype(protect)>(protect)));
+    assert(r.vertex_splits == 0 && valence(v, t) == 6);
   }
   // valence 6 to 10: merge quads around one vertex of a torus
   for(int merges = 1; merges <= 4; ++merges)

@@ -30,8 +30,11 @@ struct Default_optimizer_visitor
   void on_started(const Optimizer_statistics&) {}
   /// called after the candidates of a batch are scored, with the number of candidates to execute.
   void on_batch_scored(const Optimizer_statistics&, std::size_t /*number_of_chosen_candidates*/) {}
-  /// called after each executed surgery that was kept, with its score change (negative: better).
-  void on_surgery(const Surgery_plan<PolygonMesh>&, double /*score*/) {}
+  /// called after each executed surgery that was kept, with its score change (negative: better) and the
+  /// change in the number of singularities predicted from the plan (see `Qzip_candidate`; compare it with
+  /// a recount to measure the prediction). Some vertices of the plan may no longer exist: read only its
+  /// plain data (sizes, operations, status).
+  void on_surgery(const Surgery_plan<PolygonMesh>&, double /*score*/, int /*predicted_change*/) {}
   /// called after a surgery was executed and then undone because no valid quad shape was found.
   void on_undo(const Surgery_plan<PolygonMesh>&) {}
   /// called after each batch (and its smoothing): `s.batch`, `s.number_of_singularities`, `s.elapsed_seconds`.

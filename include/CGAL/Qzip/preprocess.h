@@ -10,8 +10,10 @@
 
 #include <CGAL/license/Qzip.h>
 
+#include <CGAL/Qzip/Named_function_parameters.h>
 #include <CGAL/Qzip/quad_operations.h>
 #include <CGAL/Qzip/singularities.h>
+#include <CGAL/Qzip/quad_quality.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -45,19 +47,42 @@ bool is_free_interior_vertex(typename boost::graph_traits<PolygonMesh>::vertex_d
   return true;
 }
 
-// moves `v` a third of the way towards the centroid of `targets`.
+template <typename PolygonMesh, typename FCM>
+bool touches_protected_face(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                            const PolygonMesh& pm, const FCM& fcm)
+{
+  for(auto h : halfedges_around_target(halfedge(v, pm), pm))
+    if(!is_border(h, pm) && get(fcm, face(h, pm))) return true;
+  return false;
+}
+
+// moves `v` the fraction `t` of the way from `from` towards the centroid of `targets`.
 template <typename PolygonMesh, typename VPM, typename VertexRange>
 void move_towards_centroid(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
                            const VertexRange& targets, const typename boost::property_traits<VPM>::value_type& from,
-                           VPM vpm)
+                           double t, VPM vpm)
 {
   typedef typename boost::property_traits<VPM>::value_type Point;
   if(targets.empty()) return;
   double x = 0, y = 0, z = 0;
-  for(auto t : targets) { const Point& p = get(vpm, t); x += p.x(); y += p.y(); z += p.z(); }
+  for(auto w : targets) { const Point& p = get(vpm, w); x += p.x(); y += p.y(); z += p.z(); }
   const double n = double(targets.size());
-  put(vpm, v, Point(from.x() + (x / n - from.x()) / 3., from.y() + (y / n - from.y()) / 3.,
-                    from.z() + (z / n - from.z()) / 3.));
+  put(vpm, v, Point(from.x() + (x / n - from.x()) * t, from.y() + (y / n - from.y()) * t,
+                    from.z() + (z / n - from.z()) * t));
+}
+
+// the smallest scaled Jacobian of the quads around `a` and `b`
+template <typename PolygonMesh, typename VPM>
+double worst_quad_around(typename boost::graph_traits<PolygonMesh>::vertex_descriptor a,
+                         typename boost::graph_traits<PolygonMesh>::vertex_descriptor b,
+                         const PolygonMesh& pm, VPM vpm)
+{
+  double worst = 1;
+  for(auto v : { a, b })
+    for(auto h : halfedges_around_target(halfedge(v, pm), pm))
+      if(!is_border(h, pm) && is_quad(h, pm))
+        worst = (std::min)(worst, quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm)));
+  return worst;
 }
 
 // removes the interior valence-2 vertex `v` by collapsing one of its two quads into the far corner.
@@ -121,8 +146,18 @@ bool split_high_valence_vertex(typename boost::graph_traits<PolygonMesh>::vertex
   std::vector<vertex_descriptor> nc, nv;
   for(auto h : halfedges_around_target(halfedge(c, pm), pm)) nc.push_back(source(h, pm));
   for(auto h : halfedges_around_target(halfedge(v, pm), pm)) nv.push_back(source(h, pm));
-  move_towards_centroid<PolygonMesh>(c, nc, from, vpm);
-  move_towards_centroid<PolygonMesh>(v, nv, from, vpm);
+  // both copies move towards the centroids of their own neighbours, by the fraction that gives the best
+  // worst quad around them (a fixed fraction can invert a quad on a curved or stretched fan)
+  double best_t = 0.5, best_quality = -2;
+  for(double t : { 1., 0.75, 0.5, 1. / 3., 0.25, 1. / 6., 0.1 })
+  {
+    move_towards_centroid<PolygonMesh>(c, nc, from, t, vpm);
+    move_towards_centroid<PolygonMesh>(v, nv, from, t, vpm);
+    const double quality = worst_quad_around(c, v, pm, vpm);
+    if(quality > best_quality) { best_quality = quality; best_t = t; }
+  }
+  move_towards_centroid<PolygonMesh>(c, nc, from, best_t, vpm);
+  move_towards_centroid<PolygonMesh>(v, nv, from, best_t, vpm);
   return true;
 }
 
@@ -142,7 +177,8 @@ taking a fan of interior faces, so that the border keeps its vertices and the de
 defects of -1 and +1 are left to the Q-zip pairing, and negative border defects of -2 or less (a
 reflex corner with a single quad) are not changed.
 
-New vertices are placed a third of the way from the split vertex towards the centroid of their neighbours.
+The two copies of a split vertex are moved from its position towards the centroids of their own neighbours, by
+the fraction (from 0.1 to 1) that gives the best worst quad around them.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
@@ -156,6 +192,10 @@ New vertices are placed a third of the way from the split vertex towards the cen
   \cgalParamNBegin{edge_is_constrained_map}
     \cgalParamDescription{a property map telling which edges are feature edges; their vertices are not touched}
     \cgalParamDefault{no edge is constrained}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_is_constrained_map}
+    \cgalParamDescription{a property map telling which faces are protected; their vertices are not touched}
+    \cgalParamDefault{no face is protected}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 \returns the numbers of operations performed and whether every interior free vertex has valence 3 to 5
@@ -172,6 +212,8 @@ Preprocess_result preprocess_valences(PolygonMesh& pm, const NamedParameters& np
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(vertex_point, pm));
   auto ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
                               Static_boolean_property_map<edge_descriptor, false>());
+  auto fcm = choose_parameter(get_parameter(np, Qzip::internal_np::face_is_constrained),
+                              Static_boolean_property_map<typename boost::graph_traits<PolygonMesh>::face_descriptor, false>());
   typedef decltype(vpm) VPM;
 
   enum Action { NOTHING, REMOVE_VALENCE_2, SPLIT_INTERIOR, SPLIT_BORDER };
@@ -180,6 +222,7 @@ Preprocess_result preprocess_valences(PolygonMesh& pm, const NamedParameters& np
   auto action = [&](vertex_descriptor v) -> Action
   {
     if(halfedge(v, pm) == boost::graph_traits<PolygonMesh>::null_halfedge()) return NOTHING;
+    if(internal::touches_protected_face(v, pm, fcm)) return NOTHING;
     const std::size_t d = internal::valence(v, pm);
     if(internal::is_free_interior_vertex<PolygonMesh, VPM>(v, pm, ecm))
       return d == 2 ? REMOVE_VALENCE_2 : (d >= 6 ? SPLIT_INTERIOR : NOTHING);

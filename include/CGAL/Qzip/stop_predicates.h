@@ -38,8 +38,6 @@ struct Optimizer_statistics
   std::size_t number_of_undone_surgeries = 0;   ///< Q-zips executed and undone (no valid smoothed shape)
   std::size_t number_of_failed_surgeries = 0;   ///< realizable plans that `execute_qzip()` rolled back
   std::size_t number_of_skipped_surgeries = 0;  ///< chosen plans skipped because their region was already operated on
-  /// executed Q-zips whose change in the number of singularities was the one predicted from the plan
-  std::size_t number_of_exact_predictions = 0;
   double elapsed_seconds = 0;                   ///< wall-clock time since the start of the optimization
   double scoring_seconds = 0;                   ///< part of it spent finding and scoring candidates
   double execution_seconds = 0;                 ///< part of it spent executing, smoothing and checking surgeries

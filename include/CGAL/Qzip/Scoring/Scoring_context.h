@@ -145,7 +145,7 @@ public:
     if(!(m_mean_face_area > 0) || !std::isfinite(m_mean_face_area)) m_mean_face_area = 1.;
   }
 
-  // refreshes everything; returns the singular vertices (in the order of vertices(pm)).
+  // refreshes everything; returns the singular vertices sorted by position.
   std::vector<vertex_descriptor> begin_batch()
   {
     ++epoch;
@@ -165,6 +165,15 @@ public:
       cut.push_back(c ? 1 : 0);
       if(d != 0) singular.push_back(v);
     }
+    // an order that does not depend on descriptors (the seeds' order breaks ties)
+    std::sort(singular.begin(), singular.end(), [this](vertex_descriptor a, vertex_descriptor b)
+    {
+      const Point& pa = get(vpm, a);
+      const Point& pb = get(vpm, b);
+      if(pa.x() != pb.x()) return pa.x() < pb.x();
+      if(pa.y() != pb.y()) return pa.y() < pb.y();
+      return pa.z() < pb.z();
+    });
     // closest singularities
     std::vector<std::pair<vertex_descriptor, vertex_descriptor> > seeds;
     for(vertex_descriptor v : singular) seeds.emplace_back(v, v);

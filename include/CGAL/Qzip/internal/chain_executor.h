@@ -75,6 +75,10 @@ class Chain_executor
   std::unordered_map<vertex_descriptor, Before, Vertex_hash> before;
   std::unordered_set<vertex_descriptor, Vertex_hash> alive, created;
   std::unordered_set<face_descriptor, Face_hash> new_faces;
+  // the same vertices and faces in the order they appeared, so that every decision and every output
+  // follows the surgery, not the hash order of descriptors (which differs between mesh types)
+  std::vector<vertex_descriptor> vertex_order;
+  std::vector<face_descriptor> face_order;
   std::size_t collapses = 0, splits = 0, cleanups = 0;
 
 public:
@@ -113,8 +117,10 @@ public:
     r.number_of_collapses = collapses;
     r.number_of_splits = splits;
     r.number_of_cleanups = cleanups;
-    r.touched_vertices.assign(alive.begin(), alive.end());
-    for(face_descriptor f : new_faces) r.scar_faces.push_back(f);
+    r.touched_vertices = live_vertices_in_order();
+    std::unordered_set<face_descriptor, Face_hash> listed;
+    for(face_descriptor f : face_order)
+      if(new_faces.count(f) != 0 && listed.insert(f).second) r.scar_faces.push_back(f);
     locate_moved_pair(plan, source_at, target_at, r);
     visitor.on_qzip_finished(plan, true);
     return r;
@@ -129,7 +135,17 @@ private:
     {
       before[v] = Before{ int(valence(v, pm)), is_border_vertex(v, pm) };
       alive.insert(v);
+      vertex_order.push_back(v);
     }
+  }
+
+  std::vector<vertex_descriptor> live_vertices_in_order() const
+  {
+    std::vector<vertex_descriptor> out;
+    std::unordered_set<vertex_descriptor, Vertex_hash> listed;
+    for(vertex_descriptor v : vertex_order)
+      if(alive.count(v) != 0 && listed.insert(v).second) out.push_back(v);
+    return out;
   }
 
   bool constrained_around(vertex_descriptor v) const
@@ -168,7 +184,9 @@ private:
     const vertex_descriptor c = target(next(next(last_quad, pm), pm), pm);
     alive.insert(c);
     created.insert(c);
+    vertex_order.push_back(c);
     new_faces.insert(face(last_quad, pm));
+    face_order.push_back(face(last_quad, pm));
     ++splits;
     return true;
   }
@@ -222,7 +240,7 @@ private:
   // (two v5 merged) is split into two regular vertices, which leaves two v5.
   bool clean_up()
   {
-    std::vector<vertex_descriptor> candidates(alive.begin(), alive.end());
+    const std::vector<vertex_descriptor> candidates = live_vertices_in_order();
     for(vertex_descriptor v : candidates)
     {
       if(alive.count(v) == 0 || is_border_vertex(v, pm)) continue;
@@ -291,7 +309,7 @@ private:
                          Qzip_result<PolygonMesh>& r) const
   {
     std::vector<vertex_descriptor> moved;
-    for(vertex_descriptor v : alive)
+    for(vertex_descriptor v : live_vertices_in_order())
     {
       const int d = int(valence(v, pm));
       if(d == 4 || is_border_vertex(v, pm)) continue;
@@ -300,9 +318,8 @@ private:
     }
     if(moved.size() != 2) return;
     const int ds = plan.source_valence, dt = plan.target_valence;
-    const int d0 = int(valence(moved[0], pm)), d1 = int(valence(moved[1], pm));
     bool swap = false;
-    if(ds != dt) swap = (d0 != ds);
+    if(ds != dt) swap = int(valence(moved[0], pm)) != ds;
     else
     {
       auto dist = [this](vertex_descriptor v, const Point& p) { return CGAL::squared_distance(get(log_vpm(), v), p); };

@@ -166,9 +166,16 @@ private:
   // vertices within `radius` edges of `seeds` (seeds first)
   std::vector<vertex_descriptor> ball(const std::vector<vertex_descriptor>& seeds, int radius)
   {
+    std::vector<int> level;
+    return ball(seeds, radius, level);
+  }
+
+  // same, with the distance of each vertex to the seeds
+  std::vector<vertex_descriptor> ball(const std::vector<vertex_descriptor>& seeds, int radius, std::vector<int>& level)
+  {
     ++search_epoch;
     std::vector<vertex_descriptor> out;
-    std::vector<int> level;
+    level.clear();
     for(vertex_descriptor v : seeds)
       if(get(search_stamp, v) != search_epoch) { put(search_stamp, v, search_epoch); out.push_back(v); level.push_back(0); }
     for(std::size_t i = 0; i < out.size(); ++i)
@@ -209,19 +216,6 @@ private:
         q = (std::min)(q, j);
       }
     return std::make_pair(n, q);
-  }
-
-  std::size_t count_singularities_now() const
-  {
-    std::size_t n = 0;
-    for(vertex_descriptor v : vertices(pm))
-    {
-      if(halfedge(v, pm) == GT::null_halfedge()) continue;
-      if(ctx.is_border_or_feature(v))
-      { if(vertex_defect_info(v, pm, vpm, ecm, GeomTraits()).defect != 0) ++n; }
-      else if(valence(v, pm) != 4) ++n;
-    }
-    return n;
   }
 
   // ---------------------------------------------------------------------------------------------
@@ -284,14 +278,21 @@ private:
     return paths;
   }
 
+  // the plan keeps the number of faces within the tolerance, or brings it closer to the initial one
+  bool keeps_face_count(const Surgery_plan<PolygonMesh>& plan) const
+  {
+    const long f0 = long(stats.initial_number_of_faces);
+    const long fnow = long(stats.number_of_faces);
+    const long fafter = fnow + long(plan.number_of_splits()) - long(plan.number_of_collapses());
+    return std::abs(double(fafter - f0)) <= settings.face_count_tolerance * double(f0) ||
+           std::abs(fafter - f0) < std::abs(fnow - f0);
+  }
+
   template <typename NP>
   bool best_candidate(vertex_descriptor s, const NP& plan_np, Scored& best)
   {
     bool found = false;
     const auto paths = partner_paths(s);
-    const long f0 = long(stats.initial_number_of_faces);
-    const long fnow = long(stats.number_of_faces);
-    const double tol = settings.face_count_tolerance * double(f0);
     std::size_t longest = 0;
     for(const auto& path : paths) longest = (std::max)(longest, path.size());
     ctx.set_distance_radius_hint(int(longest) + 3);
@@ -302,8 +303,7 @@ private:
       {
         Surgery_plan<PolygonMesh> plan = plan_qzip(pm, path, Strip_operation(m), plan_np);
         if(!plan.is_realizable()) continue;
-        const long fafter = fnow + long(plan.number_of_splits()) - long(plan.number_of_collapses());
-        if(std::abs(double(fafter - f0)) > tol && std::abs(fafter - f0) > std::abs(fnow - f0)) continue;
+        if(!keeps_face_count(plan)) continue;
         Qzip_candidate<PolygonMesh> c;
         c.plan = &plan;
         c.source = s;
@@ -336,7 +336,7 @@ private:
   // execution
 
   template <typename NP>
-  void execute(const Scored& cand, const NP& exec_np, std::vector<vertex_descriptor>& /*unused*/)
+  void execute(const Scored& cand, const NP& exec_np)
   {
     const Surgery_plan<PolygonMesh>& plan = cand.plan;
     // The region of the plan must not have been operated on in this batch. Only the path vertices are
@@ -345,15 +345,30 @@ private:
     // more from the earlier paths has its one-ring (what its operations touch) disjoint from theirs.
     for(vertex_descriptor v : plan.path)
       if(get(op_stamp, v) == batch_epoch) { ++stats.number_of_skipped_surgeries; return; }
-    mark(ball(plan.path, 3));
+    if(!keeps_face_count(plan)) { ++stats.number_of_skipped_surgeries; return; }
+    // A surgery only removes vertices within three edges of its path (the far corners of the clean-up);
+    // the vertices at distance four are never touched: they stay alive through an undo and lead back
+    // to the re-created vertices, whose descriptors are new (or recycled with reset properties).
+    std::vector<int> level;
+    const std::vector<vertex_descriptor> region = ball(plan.path, 4, level);
+    std::vector<vertex_descriptor> shell;
+    for(std::size_t i = 0; i < region.size(); ++i)
+    {
+      if(level[i] < 4) put(op_stamp, region[i], batch_epoch);
+      else shell.push_back(region[i]);
+    }
+    auto mark_after_undo = [&]()
+    {
+      mark(region);           // no walk: some of these descriptors may be dead
+      mark(ball(shell, 4));   // walks from vertices that are alive
+    };
 
-    const std::pair<std::size_t, double> before = quality(ball(plan.path, 2));
-#ifdef CGAL_QZIP_OPTIMIZER_MEASURE_PREDICTIONS
-    const std::size_t singular_before = count_singularities_now();
-#endif
+    std::vector<vertex_descriptor> near_path;
+    for(std::size_t i = 0; i < region.size() && level[i] <= 2; ++i) near_path.push_back(region[i]);
+    const std::pair<std::size_t, double> before = quality(near_path);
     Qzip_history<PolygonMesh, VertexPointMap> history(pm, vpm); // this surgery only
     Qzip_result<PolygonMesh> r = execute_qzip(pm, plan, history, exec_np);
-    if(!r.is_done()) { ++stats.number_of_failed_surgeries; mark(ball(plan.path, 3)); return; }
+    if(!r.is_done()) { ++stats.number_of_failed_surgeries; mark_after_undo(); return; }
 
     std::vector<vertex_descriptor> scar = ball(r.touched_vertices, 1);
     sort_by_position(scar);
@@ -368,21 +383,17 @@ private:
     {
       for(std::size_t i = 0; i < scar.size(); ++i) put(vpm, scar[i], saved[i]);
       undo_qzip(history);
-      mark(ball(plan.path, 3)); // re-created vertices have new descriptors
+      mark_after_undo();
       ++stats.number_of_undone_surgeries;
       visitor.on_undo(plan);
       return;
     }
-#ifdef CGAL_QZIP_OPTIMIZER_MEASURE_PREDICTIONS
-    if(singular_before - count_singularities_now() == std::size_t(cand.predicted_cancellations))
-      ++stats.number_of_exact_predictions;
-#endif
     for(vertex_descriptor v : scar) put(scar_stamp, v, batch_epoch);
     mark(ball(r.touched_vertices, 2)); // new vertices may reuse the descriptors of removed ones
     stats.number_of_faces = stats.number_of_faces + r.number_of_splits - r.number_of_collapses;
     ++stats.number_of_surgeries;
     ++stats.surgeries_in_last_batch;
-    visitor.on_surgery(plan, cand.score);
+    visitor.on_surgery(plan, cand.score, -cand.predicted_cancellations);
   }
 
   void run_batch()
@@ -421,8 +432,7 @@ private:
     visitor.on_batch_scored(stats, chosen.size());
 
     exec_timer.start();
-    std::vector<vertex_descriptor> unused;
-    for(const Scored& c : chosen) execute(c, plan_np, unused);
+    for(const Scored& c : chosen) execute(c, plan_np);
 
     // smoothing near all the scars of the batch
     if(settings.smooth && stats.surgeries_in_last_batch > 0)

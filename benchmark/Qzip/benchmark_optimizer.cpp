@@ -1,0 +1,233 @@
+// Benchmark of CGAL::Qzip::optimize_singularities(): the shared corpus, Catmull-Clark refinements of a
+// corpus mesh (time against size, up to ~1M quads), and a genus-3 "robustness test" (paper, Fig. 17).
+// Prints markdown tables on stdout (progress on stderr).
+//
+// usage: benchmark_optimizer [--corpus DIR] [--runs R] [--max-level L] [--skip-corpus] [--skip-large]
+//                            [--skip-genus3] [--measure]
+//   --runs R       runs per mesh below 100k quads, the median time is reported (default 3)
+//   --max-level L  Catmull-Clark levels of the scaling series (default 4: ~1M quads)
+//   --measure      recount the singularities after every surgery (slow) to measure how often the change
+//                  predicted from the plan is the actual one (meshes below 20k quads)
+
+#include "qzip_test_utils.h"
+
+#include <CGAL/Qzip/mesh_report.h>
+#include <CGAL/Qzip/optimize_singularities.h>
+#include <CGAL/Qzip/preprocess.h>
+
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+
+#include <array>
+#include <cstdio>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+using namespace qzip_test;
+namespace Q = CGAL::Qzip;
+namespace PMP = CGAL::Polygon_mesh_processing;
+typedef Surface_mesh Mesh;
+
+struct Measure_visitor : public Q::Default_optimizer_visitor<Mesh>
+{
+  const Mesh* mesh = nullptr;
+  std::size_t count = 0, exact = 0, surgeries = 0;
+  void on_started(const Q::Optimizer_statistics& s) { count = s.number_of_singularities; }
+  void on_surgery(const Q::Surgery_plan<Mesh>&, double, int predicted)
+  {
+    ++surgeries;
+    const std::size_t now = Q::compute_mesh_report(*mesh).total_absolute_defect;
+    if(long(now) - long(count) == predicted) ++exact;
+    count = now;
+  }
+  void on_batch_finished(const Q::Optimizer_statistics& s) { count = s.number_of_singularities; }
+};
+
+struct Row
+{
+  std::string name;
+  Q::Mesh_report before, after;
+  Q::Optimizer_statistics stats;
+  double seconds = 0;
+  std::string exact;
+};
+
+static std::string fmt(double x, int p = 3)
+{
+  std::ostringstream os;
+  os << std::fixed << std::setprecision(p) << x;
+  return os.str();
+}
+
+static std::size_t singular(const Q::Mesh_report& r)
+{
+  return r.number_of_interior_valence_3_like + r.number_of_interior_valence_5_like +
+         r.number_of_boundary_negative_defects + r.number_of_boundary_positive_defects;
+}
+
+// preprocesses `input`, then optimizes copies of it `runs` times; the median time is kept
+static Row run(const std::string& name, const Mesh& input, int runs, bool measure)
+{
+  Row row;
+  row.name = name;
+  Mesh pre;
+  copy_mesh(input, pre);
+  Q::preprocess_valences(pre);
+  row.before = Q::compute_mesh_report(pre);
+  std::vector<double> times;
+  for(int i = 0; i < runs; ++i)
+  {
+    Mesh m;
+    copy_mesh(pre, m);
+    CGAL::Real_timer t;
+    t.start();
+    row.stats = Q::optimize_singularities(m, CGAL::parameters::random_seed(0));
+    t.stop();
+    times.push_back(t.time());
+    if(i + 1 == runs)
+    {
+      row.after = Q::compute_mesh_report(m);
+      if(measure && row.before.number_of_faces < 20000)
+      {
+        Mesh mm;
+        copy_mesh(pre, mm);
+        Measure_visitor vis;
+        vis.mesh = &mm;
+        Q::optimize_singularities(mm, CGAL::parameters::random_seed(0).visitor(std::ref(vis)));
+        row.exact = std::to_string(vis.exact) + "/" + std::to_string(vis.surgeries);
+      }
+    }
+  }
+  std::sort(times.begin(), times.end());
+  row.seconds = times[times.size() / 2];
+  std::cerr << "  " << name << ": " << singular(row.before) << " -> " << singular(row.after) << " singularities, "
+            << row.before.number_of_faces << " -> " << row.after.number_of_faces << " faces, " << fmt(row.seconds) << " s"
+            << std::endl;
+  return row;
+}
+
+static void print_header(bool measure)
+{
+  std::cout << "| mesh | faces before → after (Δ%) | singularities before → after | v3 / v5 after (interior) | bound 2·|4χ| + 1% F | "
+               "min / mean SJ before | min / mean SJ after | inverted after | batches | time (s) |"
+            << (measure ? " exact predictions |" : "") << "\n"
+            << "|---|---|---|---|---|---|---|---|---|---|" << (measure ? "---|" : "") << "\n";
+}
+
+static void print_row(const Row& r, bool measure)
+{
+  const double df = 100. * (double(r.after.number_of_faces) - double(r.before.number_of_faces)) / double(r.before.number_of_faces);
+  std::cout << "| " << r.name << " | " << r.before.number_of_faces << " → " << r.after.number_of_faces << " ("
+            << (df >= 0 ? "+" : "") << fmt(df, 1) << ") | " << singular(r.before) << " → " << singular(r.after) << " | "
+            << r.after.number_of_interior_valence_3_like << " / " << r.after.number_of_interior_valence_5_like << " | ";
+  if(r.before.has_singularity_lower_bound)
+  {
+    const double target = 2. * double(r.before.singularity_lower_bound) + 0.01 * double(r.before.number_of_faces);
+    std::cout << r.before.singularity_lower_bound << ": " << fmt(target, 0) << (double(singular(r.after)) <= target ? " ✓" : " ✗");
+  }
+  else std::cout << "n/a";
+  std::cout << " | " << fmt(r.before.min_scaled_jacobian) << " / " << fmt(r.before.mean_scaled_jacobian) << " | "
+            << fmt(r.after.min_scaled_jacobian) << " / " << fmt(r.after.mean_scaled_jacobian) << " | "
+            << r.after.number_of_inverted_quads << (r.before.number_of_inverted_quads > 0 ? " (input: " + std::to_string(r.before.number_of_inverted_quads) + ")" : std::string())
+            << " | " << r.stats.batch << " | " << fmt(r.seconds) << " |" << (measure ? " " + r.exact + " |" : "") << "\n";
+}
+
+// the closed surface of a 7 x 3 x 1 plate of voxels with three 1 x 1 holes: genus 3, all quads
+static void make_genus3_plate(Mesh& m)
+{
+  const int X = 7, Y = 3;
+  auto solid = [&](int x, int y) { return x >= 0 && y >= 0 && x < X && y < Y && !(y == 1 && (x == 1 || x == 3 || x == 5)); };
+  std::vector<Point> points;
+  std::map<std::array<int, 3>, std::size_t> ids;
+  std::vector<std::vector<std::size_t> > quads;
+  auto id = [&](int x, int y, int z)
+  {
+    const std::array<int, 3> k = {{ x, y, z }};
+    auto it = ids.find(k);
+    if(it != ids.end()) return it->second;
+    points.push_back(Point(x, y, z));
+    return ids[k] = points.size() - 1;
+  };
+  for(int x = 0; x < X; ++x)
+    for(int y = 0; y < Y; ++y)
+    {
+      if(!solid(x, y)) continue;
+      if(!solid(x + 1, y)) quads.push_back({ id(x + 1, y, 0), id(x + 1, y + 1, 0), id(x + 1, y + 1, 1), id(x + 1, y, 1) });
+      if(!solid(x - 1, y)) quads.push_back({ id(x, y, 0), id(x, y, 1), id(x, y + 1, 1), id(x, y + 1, 0) });
+      if(!solid(x, y + 1)) quads.push_back({ id(x, y + 1, 0), id(x, y + 1, 1), id(x + 1, y + 1, 1), id(x + 1, y + 1, 0) });
+      if(!solid(x, y - 1)) quads.push_back({ id(x, y, 0), id(x + 1, y, 0), id(x + 1, y, 1), id(x, y, 1) });
+      quads.push_back({ id(x, y, 1), id(x + 1, y, 1), id(x + 1, y + 1, 1), id(x, y + 1, 1) });
+      quads.push_back({ id(x, y, 0), id(x, y + 1, 0), id(x + 1, y + 1, 0), id(x + 1, y, 0) });
+    }
+  clear(m);
+  PMP::polygon_soup_to_polygon_mesh(points, quads, m);
+}
+
+int main(int argc, char** argv)
+{
+  std::string corpus = QZIP_SHARED_DATA_DIR;
+  int runs = 3, max_level = 4;
+  bool skip_corpus = false, skip_large = false, skip_genus3 = false, measure = false;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(a == "--corpus" && i + 1 < argc) corpus = argv[++i];
+    else if(a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
+    else if(a == "--max-level" && i + 1 < argc) max_level = std::atoi(argv[++i]);
+    else if(a == "--skip-corpus") skip_corpus = true;
+    else if(a == "--skip-large") skip_large = true;
+    else if(a == "--skip-genus3") skip_genus3 = true;
+    else if(a == "--measure") measure = true;
+    else { std::cerr << "error: unknown argument '" << a << "'" << std::endl; return EXIT_FAILURE; }
+  }
+
+  if(!skip_corpus)
+  {
+    if(!file_exists(corpus + "/SOURCES.md"))
+      std::cout << "corpus not found at " << corpus << ": skipped\n";
+    else
+    {
+      std::cout << "\n### Shared corpus (default parameters, seed 0, median of " << runs << " runs)\n\n";
+      print_header(measure);
+      for(const std::string& f : shared_corpus_files())
+      {
+        Mesh m;
+        if(!read_mesh(corpus + "/" + f, m)) { std::cout << "| " << f << " | unreadable |\n"; continue; }
+        print_row(run(f, m, faces(m).size() < 100000 ? runs : 1, measure), measure);
+      }
+    }
+  }
+
+  if(!skip_large)
+  {
+    const std::string base = corpus + "/quadriflow_gargoyle.obj";
+    Mesh m;
+    if(!read_mesh(base, m)) read_mesh(CGAL::data_file_path("meshes/spot_quadrangulated.obj"), m);
+    std::cout << "\n### Catmull-Clark refinements of quadriflow_gargoyle.obj (time against size)\n\n";
+    print_header(false);
+    for(int level = 0; level <= max_level; ++level)
+    {
+      if(level > 0) CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(1));
+      const std::size_t n = faces(m).size();
+      print_row(run("gargoyle CC" + std::to_string(level) + " (" + std::to_string(n) + " quads)", m, n < 100000 ? runs : 1, false), false);
+    }
+  }
+
+  if(!skip_genus3)
+  {
+    std::cout << "\n### Genus-3 robustness test (voxel plate with 3 holes, triangulated, Catmull-Clark; expected optimum: 16 v5)\n\n";
+    print_header(false);
+    for(int levels = 1; levels <= 2; ++levels)
+    {
+      Mesh m;
+      make_genus3_plate(m);
+      PMP::triangulate_faces(m);
+      CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(levels));
+      print_row(run("genus-3 plate, triangulated, CC" + std::to_string(levels), m, runs, false), false);
+    }
+  }
+  return EXIT_SUCCESS;
+}

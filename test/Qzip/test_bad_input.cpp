@@ -1,0 +1,315 @@
+// The library on the bad-input corpus (data/bad/, see its README.md): every file is read with
+// CGAL::IO::read_polygon_mesh() into a Surface_mesh and a Polyhedron_3; files listed as `accept` must load
+// and files listed as `reject` must not. Every mesh that loads as a valid polygon mesh (whatever the README
+// says) goes through the mesh report, preprocess_valences(), shortest_surgery_path(), plan_qzip(),
+// execute_qzip() with a Qzip_history, undo_qzip() and qzip(), before and after preprocessing.
+// Checked: nothing crashes; a call that refuses (a status, or a CGAL precondition exception) leaves the
+// mesh exactly as it was; a call that succeeds leaves a valid polygon mesh with the same Euler
+// characteristic, face degrees and border; an undo restores the mesh exactly.
+// Usage: test_bad_input [DIR] (default data/bad).
+#include "qzip_test_utils.h"
+#include "qzip_robustness_utils.h"
+#include "../../examples/Qzip/qzip_example_io.h" // the examples' input checks
+
+#include <CGAL/Qzip/mesh_report.h>
+#include <CGAL/Qzip/preprocess.h>
+#include <CGAL/Qzip/qzip.h>
+
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <new>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include <dirent.h>
+
+using namespace qzip_test;
+namespace Q = CGAL::Qzip;
+
+namespace {
+
+struct Counters
+{
+  int files = 0, loaded = 0, refused_to_load = 0;
+  int preprocess_runs = 0, preprocess_refused = 0;
+  int plans = 0, plans_refused = 0, executed = 0, execution_refused = 0, undone = 0, noop_executions = 0;
+  int preconditions = 0; // CGAL preconditions that reported a bad argument (mesh left unchanged)
+};
+Counters counters;
+
+/// reads `path` into `m`; `false` if the reader refuses it (or throws, e.g. std::bad_alloc). Two checks of the
+/// examples' reader come first, because CGAL 5.5's readers misbehave on such files: OBJ and PLY face indices
+/// are not checked (OBJ even turns index 0 and n+1 into n) and the builder reads past its vertex array;
+/// OFF and PLY header counts are reserved before reading (an abort under AddressSanitizer on absurd counts).
+template <typename Mesh>
+bool read_file(const std::string& path, Mesh& m)
+{
+  clear(m);
+  struct stat st;
+  std::string error;
+  if(::stat(path.c_str(), &st) != 0) return false;
+  if(!qzip_example::declared_counts_fit(path, std::uintmax_t(st.st_size), error)) return false;
+  if(!qzip_example::face_indices_in_range(path, error)) return false;
+  try
+  {
+    return CGAL::IO::read_polygon_mesh(path, m);
+  }
+  catch(const std::bad_alloc&) { return false; }
+  catch(const std::exception&) { return false; }
+}
+
+template <typename Mesh>
+bool has_finite_points(const Mesh& m)
+{
+  for(auto v : vertices(m))
+  {
+    const Point& p = get(CGAL::vertex_point, m, v);
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) return false;
+  }
+  return true;
+}
+
+template <typename Mesh>
+bool has_pinched_vertex(const Mesh& m)
+{
+  std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor> pinched;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(m, std::back_inserter(pinched));
+  return !pinched.empty();
+}
+
+using qzip_robustness::fingerprint;
+using qzip_robustness::shape;
+using qzip_robustness::singular_interior_vertices;
+
+template <typename Mesh>
+using Fingerprint = decltype(fingerprint(std::declval<const Mesh&>()));
+
+template <typename Mesh>
+bool is_sane(const Mesh& m)
+{
+  return CGAL::is_valid_polygon_mesh(m);
+}
+
+/// runs `f()`; a CGAL precondition exception counts as a refusal and must leave `m` unchanged.
+template <typename Mesh, typename F>
+bool guarded(const Mesh& m, const Fingerprint<Mesh>& before, const char* what, const std::string& name, F f)
+{
+  try
+  {
+    f();
+    return true;
+  }
+  catch(const CGAL::Precondition_exception& e)
+  {
+    ++counters.preconditions;
+    std::cout << "  " << name << ": " << what << " reported a precondition: " << e.expression() << std::endl;
+    assert(is_sane(m));
+    assert(fingerprint(m) == before);
+    return false;
+  }
+}
+
+/// every pair of singularities (at most 10 of them), every motion: plan, execute with a record, undo.
+template <typename Mesh>
+void exercise_qzips(Mesh& m, const std::string& name)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  const Fingerprint<Mesh> fp0 = fingerprint(m);
+  const qzip_robustness::Shape shape0 = shape(m);
+
+  // arguments that are not a path
+  std::vector<vertex_descriptor> none;
+  assert(Q::plan_qzip(m, none, Q::Strip_operation::LEFT_SPLIT).status == Q::Plan_status::INVALID_PATH);
+  if(!vertices(m).empty())
+  {
+    const vertex_descriptor v = *vertices(m).begin();
+    assert(Q::shortest_surgery_path(m, v, v).empty());
+    assert(Q::plan_qzip(m, std::vector<vertex_descriptor>(1, v), Q::Strip_operation::RIGHT_SPLIT).status
+           == Q::Plan_status::INVALID_PATH);
+    assert(Q::plan_qzip(m, std::vector<vertex_descriptor>(2, v), Q::Strip_operation::RIGHT_SPLIT).status
+           == Q::Plan_status::INVALID_PATH);
+  }
+
+  std::vector<vertex_descriptor> sing = singular_interior_vertices(m);
+  if(sing.size() > 10) sing.resize(10);
+  for(std::size_t i = 0; i < sing.size(); ++i)
+    for(std::size_t j = 0; j < sing.size(); ++j)
+    {
+      if(i == j) continue;
+      std::vector<vertex_descriptor> path;
+      guarded(m, fp0, "shortest_surgery_path", name, [&]() { path = Q::shortest_surgery_path(m, sing[i], sing[j]); });
+      if(path.empty()) path = { sing[i], sing[j] }; // not a path in general: the planner must say so
+      for(int mo = 0; mo < 4; ++mo)
+      {
+        const Q::Strip_operation op = Q::Strip_operation(mo);
+        Q::Surgery_plan<Mesh> plan;
+        ++counters.plans;
+        if(!guarded(m, fp0, "plan_qzip", name, [&]() { plan = Q::plan_qzip(m, path, op); })) continue;
+        assert(fingerprint(m) == fp0);
+        if(!plan.is_realizable()) { ++counters.plans_refused; continue; }
+        // executed on a copy: an undo may re-create elements with new descriptors (Polyhedron_3), which
+        // would invalidate `sing` and `path`
+        Mesh w;
+        auto v2v = copy_mesh_with_map(m, w);
+        std::vector<vertex_descriptor> wpath;
+        for(vertex_descriptor v : path) wpath.push_back(v2v[v]);
+        const Q::Surgery_plan<Mesh> wplan = Q::plan_qzip(w, wpath, op);
+        assert(wplan.is_realizable() && wplan.path.size() == plan.path.size());
+        Q::Qzip_history<Mesh> history(w);
+        Q::Qzip_result<Mesh> r;
+        if(!guarded(w, fp0, "execute_qzip", name, [&]() { r = Q::execute_qzip(w, wplan, history); })) continue;
+        if(!r.is_done())
+        {
+          ++counters.execution_refused;
+          assert(history.empty());
+          assert(is_sane(w));
+          assert(fingerprint(w) == fp0);
+          continue;
+        }
+        ++counters.executed;
+        if(wplan.number_of_collapses() == 0 && wplan.number_of_splits() == 0) ++counters.noop_executions;
+        assert(history.size() == 1);
+        assert(is_sane(w));
+        assert(shape(w) == shape0);
+        Q::undo_qzip(history);
+        ++counters.undone;
+        assert(history.empty());
+        assert(is_sane(w));
+        assert(fingerprint(w) == fp0);
+      }
+      // the convenience function, one motion per pair; undone by planning nothing: compare to a copy
+      Mesh w;
+      auto v2v = copy_mesh_with_map(m, w);
+      const Fingerprint<Mesh> fpw = fingerprint(w);
+      Q::Qzip_result<Mesh> r;
+      if(guarded(w, fpw, "qzip", name,
+                 [&]() { r = Q::qzip(w, v2v[sing[i]], v2v[sing[j]], Q::Strip_operation(int((i + j) % 4))); }))
+      {
+        assert(is_sane(w));
+        if(r.is_done()) assert(shape(w) == shape0);
+        else assert(fingerprint(w) == fpw);
+      }
+    }
+  assert(fingerprint(m) == fp0);
+}
+
+template <typename Mesh>
+void exercise_library(Mesh& m, const std::string& name)
+{
+  const Fingerprint<Mesh> fp0 = fingerprint(m);
+  const qzip_robustness::Shape shape0 = shape(m);
+
+  guarded(m, fp0, "compute_mesh_report", name, [&]() { (void)Q::compute_mesh_report(m); });
+  assert(fingerprint(m) == fp0);
+
+  exercise_qzips(m, name); // meshes with non-quad faces included: the planner must refuse what it cannot do
+
+  Mesh p;
+  copy_mesh(m, p);
+  ++counters.preprocess_runs;
+  Q::Preprocess_result pr;
+  if(guarded(p, fingerprint(p), "preprocess_valences", name, [&]() { pr = Q::preprocess_valences(p); }))
+  {
+    assert(is_sane(p));
+    assert(shape(p) == shape0); // quad collapses and vertex splits keep the Euler characteristic and face degrees
+    if(!pr.converged) ++counters.preprocess_refused;
+    std::cout << "  " << name << ": preprocessing removed " << pr.removed_valence_2 << " valence-2 vertices, split "
+              << pr.vertex_splits << (pr.converged ? "" : " (not converged)") << std::endl;
+    exercise_qzips(p, name + " (preprocessed)");
+  }
+  else
+    ++counters.preprocess_refused;
+}
+
+/// the expected behaviour of each file, from the table of README.md (`| \`file\` | ... | accept |`).
+std::map<std::string, std::string> read_manifest(const std::string& dir)
+{
+  std::map<std::string, std::string> expected;
+  std::ifstream in(dir + "/README.md");
+  assert(in.good());
+  std::string line;
+  while(std::getline(in, line))
+  {
+    if(line.compare(0, 3, "| `") != 0) continue;
+    const std::string::size_type end = line.find('`', 3);
+    const std::string::size_type last = line.find_last_of('|', line.size() - 2);
+    assert(end != std::string::npos && last != std::string::npos);
+    std::string value = line.substr(last + 1);
+    value.erase(std::remove(value.begin(), value.end(), ' '), value.end());
+    value.erase(std::remove(value.begin(), value.end(), '|'), value.end());
+    assert(value == "accept" || value == "reject" || value == "either");
+    expected[line.substr(3, end - 3)] = value;
+  }
+  return expected;
+}
+
+std::vector<std::string> list_directory(const std::string& dir)
+{
+  std::vector<std::string> names;
+  DIR* d = ::opendir(dir.c_str());
+  assert(d != nullptr);
+  while(dirent* e = ::readdir(d))
+  {
+    const std::string n = e->d_name;
+    if(n != "." && n != ".." && n != "README.md") names.push_back(n);
+  }
+  ::closedir(d);
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+template <typename Mesh>
+void test_file(const std::string& dir, const std::string& name, const std::string& expected, const char* type)
+{
+  Mesh m;
+  const bool read = read_file(dir + "/" + name, m);
+  const bool valid = read && CGAL::is_valid_polygon_mesh(m);
+  const bool loads = valid && !faces(m).empty() && has_finite_points(m) && !has_pinched_vertex(m);
+  std::cout << name << " [" << type << "]: " << (loads ? "loads" : (valid ? "reads, but is not a usable mesh" : "refused"))
+            << " (expected: " << expected << ")" << std::endl;
+  if(expected == "accept") assert(loads);
+  if(expected == "reject") assert(!loads);
+  if(loads) ++counters.loaded; else ++counters.refused_to_load;
+  if(valid && !faces(m).empty())
+    exercise_library(m, name);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const std::string dir = (argc > 1) ? argv[1] : "data/bad";
+  const std::map<std::string, std::string> expected = read_manifest(dir);
+  const std::vector<std::string> names = list_directory(dir);
+  assert(names.size() >= 30);
+  for(const auto& kv : expected)
+    assert(std::find(names.begin(), names.end(), kv.first) != names.end());
+
+  for(const std::string& name : names)
+  {
+    const auto it = expected.find(name);
+    if(it == expected.end())
+    {
+      std::cerr << name << " is not listed in " << dir << "/README.md" << std::endl;
+      assert(false);
+      return EXIT_FAILURE;
+    }
+    ++counters.files;
+    test_file<Surface_mesh>(dir, name, it->second, "Surface_mesh");
+    test_file<Polyhedron>(dir, name, it->second, "Polyhedron_3");
+  }
+
+  std::cout << "files tried " << counters.files << "; meshes loaded " << counters.loaded << ", refused "
+            << counters.refused_to_load << "; preprocessing runs " << counters.preprocess_runs << " ("
+            << counters.preprocess_refused << " not converged or refused); plans " << counters.plans << " ("
+            << counters.plans_refused << " refused), Q-zips executed and undone " << counters.executed << ", "
+            << "refused at execution " << counters.execution_refused << ", empty plans " << counters.noop_executions
+            << " (no operation); preconditions reported "
+            << counters.preconditions << "; crashes 0, violations 0" << std::endl;
+  return EXIT_SUCCESS;
+}
