@@ -51,11 +51,14 @@ inline bool same_file(const std::string& a, const std::string& b)
   return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
-/// Checks that the element counts an OFF or PLY header declares fit in the file: every element takes at
-/// least one byte, so a count larger than the file size is a lie. CGAL's readers reserve memory for the
-/// declared counts before reading, which fails (`std::bad_alloc`, or an abort under AddressSanitizer) on
-/// absurd counts. Other formats and binary OFF are not checked.
-inline bool declared_counts_fit(const std::string& path, std::uintmax_t file_size, std::string& error)
+/// Checks the header of an OFF or PLY file before CGAL's readers see it: the element counts it declares must
+/// fit in the file (every element takes at least one byte); in a PLY header every `property` line must
+/// follow an `element` line and vertex coordinates and normals must be `float` or `double`. CGAL 5.5's readers reserve memory for the declared counts before reading, which
+/// fails (`std::bad_alloc`, or an abort under AddressSanitizer) on absurd counts, and its PLY reader
+/// dereferences the last element of an empty list on a property without element, and a null pointer on
+/// integer coordinates (segmentation faults in Release; assertions otherwise).
+/// Other formats and binary OFF are not checked.
+inline bool check_file_header(const std::string& path, std::uintmax_t file_size, std::string& error)
 {
   std::ifstream in(path, std::ios::binary);
   std::string line, token;
@@ -71,14 +74,34 @@ inline bool declared_counts_fit(const std::string& path, std::uintmax_t file_siz
   if(token == "ply")
   {
     double total = 0;
-    for(int n = 0; n < 1000 && std::getline(in, line); ++n)
+    bool element_seen = false;
+    std::string element, type;
+    while(std::getline(in, line))
     {
       std::istringstream is(line);
       std::string keyword, name;
       double count = 0;
       if(!(is >> keyword)) continue;
       if(keyword == "end_header") break;
-      if(keyword == "element" && (is >> name >> count)) total += (count > 0 ? count : 0);
+      if(keyword == "element")
+      {
+        element_seen = true;
+        element.clear();
+        if(is >> element >> count) total += (count > 0 ? count : 0);
+      }
+      else if(keyword == "property" && !element_seen)
+      {
+        error = "cannot read '" + path + "': malformed PLY header (a property before any element)";
+        return false;
+      }
+      else if(keyword == "property" && element == "vertex" && (is >> type >> name) && type != "list" &&
+              (name == "x" || name == "y" || name == "z" || name == "nx" || name == "ny" || name == "nz") &&
+              type != "float" && type != "float32" && type != "double" && type != "float64")
+      {
+        error = "cannot read '" + path + "': vertex property '" + name + "' is of type '" + type
+                + "' (float or double expected)";
+        return false;
+      }
     }
     return !too_many(total);
   }
@@ -155,7 +178,7 @@ bool read_input_mesh(const std::string& path, Mesh& mesh, std::string& error,
     error = "cannot open input '" + path + "': permission denied or unreadable";
     return false;
   }
-  if(!declared_counts_fit(path, std::uintmax_t(st.st_size), error) || !face_indices_in_range(path, error))
+  if(!check_file_header(path, std::uintmax_t(st.st_size), error) || !face_indices_in_range(path, error))
     return false;
   bool read = false;
   try

@@ -53,7 +53,7 @@ bool read_file(const std::string& path, Mesh& m)
   struct stat st;
   std::string error;
   if(::stat(path.c_str(), &st) != 0) return false;
-  if(!qzip_example::declared_counts_fit(path, std::uintmax_t(st.st_size), error)) return false;
+  if(!qzip_example::check_file_header(path, std::uintmax_t(st.st_size), error)) return false;
   if(!qzip_example::face_indices_in_range(path, error)) return false;
   try
   {
@@ -304,7 +304,7 @@ int main(int argc, char** argv)
     test_file<Polyhedron>(dir, name, it->second, "Polyhedron_3");
   }
 
-  std::cout << "files tried " << counters.files << "; meshes loaded " << counters.loaded << ", refused "
+  std::cout << "files tried " << counters.files << "; loads (Surface_mesh and Polyhedron_3 counted apart) " << counters.loaded << ", refused "
             << counters.refused_to_load << "; preprocessing runs " << counters.preprocess_runs << " ("
             << counters.preprocess_refused << " not converged or refused); plans " << counters.plans << " ("
             << counters.plans_refused << " refused), Q-zips executed and undone " << counters.executed << ", "

@@ -220,7 +220,8 @@ plan_qzip(const PolygonMesh& pm,
       if(is_border_edge(h, pm) || get(ecm, edge(h, pm)) || get(fcm, face(h, pm)))
       { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
     }
-  plan.status = Plan_status::REALIZABLE;
+  plan.status = plan.number_of_collapses() + plan.number_of_splits() == 0 ? Plan_status::NOTHING_TO_DO
+                                                                          : Plan_status::REALIZABLE;
   return plan;
 }
 

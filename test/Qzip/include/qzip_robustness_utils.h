@@ -20,7 +20,7 @@
 
 namespace qzip_robustness {
 
-/// The mesh as geometry: for each face the cycle of its points (rotated to start at the smallest), sorted,
+/// The mesh as geometry: for each face the cycle of its points (its lexicographically smallest rotation), sorted,
 /// then the sorted points of all vertices. Descriptor-free: equal after an undo or a refusal, even when
 /// elements were re-created with new descriptors.
 template <typename Point>
@@ -43,8 +43,14 @@ auto fingerprint(const Mesh& m)
   {
     std::vector<Point> cycle;
     for(auto v : CGAL::vertices_around_face(halfedge(f, m), m)) cycle.push_back(get(vpm, v));
-    std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end()), cycle.end());
-    fp.faces.push_back(cycle);
+    // the lexicographically smallest rotation (several corners may share the smallest point)
+    std::vector<Point> best = cycle;
+    for(std::size_t k = 1; k < cycle.size(); ++k)
+    {
+      std::rotate(cycle.begin(), cycle.begin() + 1, cycle.end());
+      if(cycle < best) best = cycle;
+    }
+    fp.faces.push_back(best);
   }
   std::sort(fp.faces.begin(), fp.faces.end());
   for(auto v : vertices(m)) fp.points.push_back(get(vpm, v));

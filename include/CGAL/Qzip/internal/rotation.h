@@ -10,6 +10,8 @@
 
 #include <CGAL/license/Qzip.h>
 
+#include <CGAL/assertions.h>
+
 #include <boost/graph/graph_traits.hpp>
 
 namespace CGAL {
@@ -46,7 +48,12 @@ int ccw_steps(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor fro
               typename boost::graph_traits<PolygonMesh>::halfedge_descriptor to, const PolygonMesh& pm)
 {
   int k = 0;
-  for(auto o = from; o != to; o = ccw(o, pm)) ++k;
+  for(auto o = from; o != to; o = ccw(o, pm))
+  {
+    ++k;
+    CGAL_assertion_msg(o != from || k == 1, "the two halfedges do not leave the same vertex");
+    if(k > 1 && o == from) return 0; // not found around the vertex: a caller error, do not loop forever
+  }
   return k;
 }
 
