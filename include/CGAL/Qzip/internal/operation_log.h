@@ -10,6 +10,8 @@
 
 #include <CGAL/license/Qzip.h>
 
+#include <CGAL/Qzip/internal/entity_ids.h>
+
 #include <CGAL/Qzip/quad_operations.h>
 
 #include <boost/functional/hash.hpp>
@@ -26,11 +28,7 @@ namespace internal {
 // A journal of atomic operations that can be rolled back exactly (connectivity and positions), most
 // recent first, without any copy of the mesh.
 //
-// Rolling back a collapse re-creates the removed vertex and edges under new descriptors, and meshes
-// recycle the descriptors of removed elements, so entries cannot name elements by descriptor. They name
-// them by entity ids instead: an id is bound to a descriptor when an element is first named, unbound when
-// the element is removed, and bound to the new descriptor when a rollback re-creates the element. An id
-// therefore always denotes the same element, whatever descriptors it had over time.
+// Entries name halfedges and vertices by entity ids (see Entity_ids), not by descriptors.
 template <typename PolygonMesh, typename VertexPointMap>
 class Operation_log
 {
@@ -41,38 +39,8 @@ public:
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
 
 private:
-  typedef std::size_t Id;
+  typedef typename Entity_ids<vertex_descriptor>::Id Id;
 
-  template <typename Descriptor>
-  struct Binding
-  {
-    std::unordered_map<Descriptor, Id, boost::hash<Descriptor> > id;
-    std::unordered_map<Id, Descriptor> descriptor;
-    Id next_id = 0;
-
-    Id name(Descriptor d)
-    {
-      auto it = id.find(d);
-      if(it != id.end()) return it->second;
-      id.emplace(d, next_id);
-      descriptor.emplace(next_id, d);
-      return next_id++;
-    }
-    Descriptor operator[](Id i) const { return descriptor.at(i); }
-    void unbind(Descriptor d)
-    {
-      auto it = id.find(d);
-      if(it == id.end()) return;
-      descriptor.erase(it->second);
-      id.erase(it);
-    }
-    void rebind(Id i, Descriptor d)
-    {
-      id[d] = i;
-      descriptor[i] = d;
-    }
-    void clear() { id.clear(); descriptor.clear(); }
-  };
 
   struct Entry
   {
@@ -91,8 +59,8 @@ private:
   VertexPointMap vpm;
   std::vector<Entry> entries;
   std::vector<std::size_t> marks;
-  Binding<halfedge_descriptor> halfedge_ids;
-  Binding<vertex_descriptor> vertex_ids;
+  Entity_ids<halfedge_descriptor> halfedge_ids;
+  Entity_ids<vertex_descriptor> vertex_ids;
 
 public:
   Operation_log(PolygonMesh& pm, VertexPointMap vpm) : pm(pm), vpm(vpm) {}

@@ -10,6 +10,8 @@
 
 #include <CGAL/license/Qzip.h>
 
+#include <CGAL/Qzip/internal/entity_ids.h>
+
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/internal/helpers.h>
@@ -52,39 +54,8 @@ public:
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
 
 private:
-  typedef std::size_t Id;
+  typedef typename Entity_ids<vertex_descriptor>::Id Id;
 
-  template <typename Descriptor>
-  struct Binding
-  {
-    std::unordered_map<Descriptor, Id, boost::hash<Descriptor> > id;
-    std::unordered_map<Id, Descriptor> descriptor;
-    Id next_id = 0;
-
-    Id name(Descriptor d)
-    {
-      auto it = id.find(d);
-      if(it != id.end()) return it->second;
-      id.emplace(d, next_id);
-      descriptor.emplace(next_id, d);
-      return next_id++;
-    }
-    Descriptor operator[](Id i) const { return descriptor.at(i); }
-    void unbind(Descriptor d)
-    {
-      auto it = id.find(d);
-      if(it == id.end()) return;
-      descriptor.erase(it->second);
-      id.erase(it);
-    }
-    void rebind(Id i, Descriptor d)
-    {
-      unbind(d);
-      id[d] = i;
-      descriptor[i] = d;
-    }
-    void clear() { id.clear(); descriptor.clear(); }
-  };
 
   enum Kind { JOIN_FACE, SPLIT_FACE, JOIN_VERTEX, SPLIT_VERTEX, MOVE_POINT };
 
@@ -101,8 +72,8 @@ private:
   VertexPointMap vpm;
   std::vector<Entry> entries;
   std::vector<std::size_t> marks;
-  Binding<halfedge_descriptor> hid;
-  Binding<vertex_descriptor> vid;
+  Entity_ids<halfedge_descriptor> hid;
+  Entity_ids<vertex_descriptor> vid;
 
 public:
   Triangle_journal(PolygonMesh& pm, VertexPointMap vpm) : pm(pm), vpm(vpm) {}
