@@ -89,18 +89,7 @@ void run(const std::string& file, std::size_t count, std::vector<Sample>& all)
     const vertex_descriptor s = sing[std::size_t(rng.get_int(0, int(sing.size())))];
     // a singularity at a random distance up to 32 edges
     const int reach = rng.get_int(1, 33);
-    std::map<vertex_descriptor, int> dist;
-    std::deque<vertex_descriptor> queue(1, s);
-    dist[s] = 0;
-    std::vector<vertex_descriptor> candidates;
-    while(!queue.empty())
-    {
-      const vertex_descriptor v = queue.front(); queue.pop_front();
-      if(v != s && singular(v, m) && dist[v] >= reach / 2) candidates.push_back(v);
-      if(dist[v] >= reach) continue;
-      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
-        if(dist.emplace(source(h, m), dist[v] + 1).second) queue.push_back(source(h, m));
-    }
+    const std::vector<vertex_descriptor> candidates = singularities_within(m, s, reach / 2, reach);
     if(candidates.empty()) continue;
     const vertex_descriptor t = candidates[std::size_t(rng.get_int(0, int(candidates.size())))];
 

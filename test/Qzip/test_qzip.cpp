@@ -377,25 +377,8 @@ std::size_t random_qzips(Mesh& m, std::size_t count, unsigned seed, Counters& c)
     const auto sing = singular_vertices(m);
     if(sing.size() < 2) break;
     const vertex_descriptor s = sing[std::size_t(rng.get_int(0, int(sing.size())))];
-    // a singularity among the close ones: bounded BFS
-    const int reach = rng.get_int(1, 16);
-    std::map<vertex_descriptor, int> dist;
-    std::deque<vertex_descriptor> queue(1, s);
-    dist[s] = 0;
-    std::vector<vertex_descriptor> candidates;
-    while(!queue.empty())
-    {
-      const vertex_descriptor v = queue.front(); queue.pop_front();
-      if(dist[v] >= reach) continue;
-      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
-      {
-        const vertex_descriptor u = source(h, m);
-        if(dist.count(u)) continue;
-        dist[u] = dist[v] + 1;
-        queue.push_back(u);
-        if(!on_border(u, m) && valence(u, m) != 4) candidates.push_back(u);
-      }
-    }
+    // a singularity among the close ones
+    const std::vector<vertex_descriptor> candidates = singularities_within(m, s, 1, rng.get_int(1, 16));
     if(candidates.empty()) continue;
     const vertex_descriptor t = candidates[std::size_t(rng.get_int(0, int(candidates.size())))];
     const auto path = Q::shortest_surgery_path(m, s, t);

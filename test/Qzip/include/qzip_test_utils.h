@@ -150,6 +150,28 @@ std::map<int, int> valence_histogram(const Mesh& m)
   return hist;
 }
 
+/// the interior singular vertices (valence other than 4) at between `lo` and `hi` edges from `s`, in
+/// breadth-first order.
+template <typename Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>
+singularities_within(const Mesh& m, typename boost::graph_traits<Mesh>::vertex_descriptor s, int lo, int hi)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::map<vertex_descriptor, int> dist;
+  std::vector<vertex_descriptor> queue(1, s), out;
+  dist[s] = 0;
+  for(std::size_t i = 0; i < queue.size(); ++i)
+  {
+    const vertex_descriptor v = queue[i];
+    const int d = dist[v];
+    if(v != s && d >= lo && !on_border(v, m) && valence(v, m) != 4) out.push_back(v);
+    if(d >= hi) continue;
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+      if(dist.emplace(source(h, m), d + 1).second) queue.push_back(source(h, m));
+  }
+  return out;
+}
+
 template <typename Mesh>
 bool all_faces_have_degree(const Mesh& m, std::size_t d)
 {
