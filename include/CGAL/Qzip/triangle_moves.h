@@ -10,6 +10,8 @@
 
 #include <CGAL/license/Qzip.h>
 
+#include <CGAL/Qzip/quad_operations.h>
+
 #include <CGAL/Qzip/internal/triangle_journal.h>
 #include <CGAL/Qzip/internal/rotation.h>
 
@@ -96,21 +98,6 @@ bool is_quad_face(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor
   return !is_border(h, pm) && face_degree(h, pm) == 4;
 }
 
-template <typename PolygonMesh>
-std::size_t tri_valence(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v, const PolygonMesh& pm)
-{
-  std::size_t n = 0;
-  for(auto h : halfedges_around_target(halfedge(v, pm), pm)) { (void)h; ++n; }
-  return n;
-}
-
-template <typename PolygonMesh>
-bool tri_is_border_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v, const PolygonMesh& pm)
-{
-  for(auto h : halfedges_around_target(halfedge(v, pm), pm))
-    if(is_border(h, pm)) return true;
-  return false;
-}
 
 template <typename PolygonMesh>
 bool are_adjacent(typename boost::graph_traits<PolygonMesh>::vertex_descriptor u,
@@ -133,7 +120,7 @@ bool has_distinct_corners(typename boost::graph_traits<PolygonMesh>::halfedge_de
 template <typename PolygonMesh>
 bool may_lose_an_edge(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v, const PolygonMesh& pm)
 {
-  return tri_valence(v, pm) >= (tri_is_border_vertex(v, pm) ? 3u : 4u);
+  return valence(v, pm) >= (is_border_vertex(v, pm) ? 3u : 4u);
 }
 
 // the default direction of VE: the neighbour of the tip `(d - 1) / 2` counterclockwise steps from t->b,
@@ -143,7 +130,7 @@ typename boost::graph_traits<PolygonMesh>::vertex_descriptor
 default_ve_target(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h, const PolygonMesh& pm)
 {
   const auto tb = opposite(next(h, pm), pm);          // t->b
-  const int d = int(tri_valence(source(tb, pm), pm));
+  const int d = int(valence(source(tb, pm), pm));
   return target(rotate_outgoing(tb, (d - 1) / 2, pm), pm);
 }
 
@@ -245,7 +232,7 @@ bool can_move_triangle(typename boost::graph_traits<PolygonMesh>::halfedge_descr
       const halfedge_descriptor o = opposite(h, pm);
       if(!internal::is_quad_face(o, pm) || !internal::has_distinct_corners(o, pm)) return false;
       if(toward != GT::null_vertex() && toward != a && toward != b) return false;
-      if(internal::tri_is_border_vertex(a, pm) && internal::tri_is_border_vertex(b, pm)) return false;
+      if(internal::is_border_vertex(a, pm) && internal::is_border_vertex(b, pm)) return false;
       if(!internal::may_lose_an_edge(t, pm)) return false;
       // the quad below may not contain the tip, and the faces across t-a and t-b must be two other faces
       for(auto x : halfedges_around_face(o, pm)) if(target(x, pm) == t) return false;
@@ -270,7 +257,7 @@ bool can_move_triangle(typename boost::graph_traits<PolygonMesh>::halfedge_descr
           if(target(x, pm) == b) return false;
       }
       // the merged vertex keeps at least 3 edges: deg(a) + deg(b) - 3
-      if(internal::tri_valence(a, pm) + internal::tri_valence(b, pm) < 6) return false;
+      if(internal::valence(a, pm) + internal::valence(b, pm) < 6) return false;
       return true;
     }
     case Triangle_move::LEFT_FLIP:
@@ -292,7 +279,7 @@ bool can_move_triangle(typename boost::graph_traits<PolygonMesh>::halfedge_descr
     }
     case Triangle_move::VERTEX_TO_EDGE:
     {
-      if(internal::tri_is_border_vertex(t, pm)) return false;
+      if(internal::is_border_vertex(t, pm)) return false;
       const vertex_descriptor w = (toward == GT::null_vertex()) ? internal::default_ve_target(h, pm) : toward;
       if(w == a || w == b) return false;
       const auto wt = halfedge(w, t, pm);
@@ -543,9 +530,9 @@ bool can_annihilate_triangles(typename boost::graph_traits<PolygonMesh>::halfedg
   const vertex_descriptor a = source(h, pm), b = target(h, pm);
   const vertex_descriptor t1 = target(next(h, pm), pm), t2 = target(next(o, pm), pm);
   if(t1 == t2 || t1 == a || t1 == b || t2 == a || t2 == b) return false;
-  if(internal::tri_is_border_vertex(a, pm) || internal::tri_is_border_vertex(b, pm)) return false;
+  if(internal::is_border_vertex(a, pm) || internal::is_border_vertex(b, pm)) return false;
   if(!internal::may_lose_an_edge(t1, pm) || !internal::may_lose_an_edge(t2, pm)) return false;
-  if(internal::tri_valence(a, pm) + internal::tri_valence(b, pm) < 7) return false;
+  if(internal::valence(a, pm) + internal::valence(b, pm) < 7) return false;
   const auto ql = opposite(prev(h, pm), pm), qr = opposite(prev(o, pm), pm);
   if(is_border(ql, pm) || is_border(qr, pm)) return false;
   const auto fl = face(ql, pm), fr = face(qr, pm);
@@ -603,8 +590,8 @@ int irregularity_after(const std::vector<typename boost::graph_traits<PolygonMes
   int s = 0;
   for(std::size_t i = 0; i < vs.size(); ++i)
   {
-    if(tri_is_border_vertex(vs[i], pm)) continue;
-    s += std::abs(int(tri_valence(vs[i], pm)) + delta[i] - 4);
+    if(is_border_vertex(vs[i], pm)) continue;
+    s += std::abs(int(valence(vs[i], pm)) + delta[i] - 4);
   }
   return s;
 }
@@ -644,7 +631,7 @@ Collision_resolution collide_triangles(typename boost::graph_traits<PolygonMesh>
   if(can_a)
   {
     // the merged vertex: deg(a) + deg(b) - 4; counted once
-    const int dm = int(internal::tri_valence(vs[0], pm) + internal::tri_valence(vs[1], pm)) - 4;
+    const int dm = int(internal::valence(vs[0], pm) + internal::valence(vs[1], pm)) - 4;
     cost_a = std::abs(dm - 4) + internal::irregularity_after(
                std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>{ vs[2], vs[3] }, { -1, -1 }, pm);
   }
@@ -694,7 +681,7 @@ Triangle_move triangle_move_toward(typename boost::graph_traits<PolygonMesh>::ha
   const auto tb = opposite(next(h, pm), pm);
   const auto tw = halfedge(triangle_tip(h, pm), w, pm);
   CGAL_precondition(tw.second);
-  const int d = int(internal::tri_valence(source(tb, pm), pm));
+  const int d = int(internal::valence(source(tb, pm), pm));
   const int k = internal::ccw_steps(tb, tw.first, pm);
   if(k == 0 || k == d - 1) return Triangle_move::EDGE_TO_VERTEX;
   if(k == 1) return Triangle_move::RIGHT_FLIP;
@@ -829,18 +816,18 @@ classify_triangle(typename boost::graph_traits<PolygonMesh>::face_descriptor f, 
   const auto h0 = halfedge(f, pm);
   CGAL_precondition(internal::face_degree(h0, pm) == 3);
   for(auto h : halfedges_around_face(h0, pm))
-    if(is_border(opposite(h, pm), pm) || internal::tri_is_border_vertex(target(h, pm), pm))
+    if(is_border(opposite(h, pm), pm) || internal::is_border_vertex(target(h, pm), pm))
     { c.configuration = Triangle_configuration::ON_BORDER; return c; }
   for(auto h : halfedges_around_face(h0, pm))
     if(internal::is_triangle_face(opposite(h, pm), pm))
     { c.configuration = Triangle_configuration::ADJACENT; return c; }
   auto best = h0;
   for(auto h : halfedges_around_face(h0, pm))
-    if(internal::tri_valence(triangle_tip(h, pm), pm) > internal::tri_valence(triangle_tip(best, pm), pm)) best = h;
+    if(internal::valence(triangle_tip(h, pm), pm) > internal::valence(triangle_tip(best, pm), pm)) best = h;
   c.base = best;
-  c.tip_defect = int(internal::tri_valence(triangle_tip(best, pm), pm)) - 5;
-  c.base_defects[0] = int(internal::tri_valence(source(best, pm), pm)) - 4;
-  c.base_defects[1] = int(internal::tri_valence(target(best, pm), pm)) - 4;
+  c.tip_defect = int(internal::valence(triangle_tip(best, pm), pm)) - 5;
+  c.base_defects[0] = int(internal::valence(source(best, pm), pm)) - 4;
+  c.base_defects[1] = int(internal::valence(target(best, pm), pm)) - 4;
   c.configuration = (c.tip_defect == 0 && c.base_defects[0] == 0 && c.base_defects[1] == 0)
                     ? Triangle_configuration::CANONICAL : Triangle_configuration::SINGULAR_CORNERS;
   return c;
@@ -899,7 +886,7 @@ Triangle_preparation_result prepare_triangles(PolygonMesh& pm, Triangle_move_his
     {
       if(classify_triangle(f, pm).configuration != Triangle_configuration::ADJACENT) continue;
       for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pm), pm))
-        if(!internal::tri_is_border_vertex(source(h, pm), pm) && !internal::tri_is_border_vertex(target(h, pm), pm) &&
+        if(!internal::is_border_vertex(source(h, pm), pm) && !internal::is_border_vertex(target(h, pm), pm) &&
            can_merge_triangles(h, pm))
         {
           merge_triangles(h, history);
