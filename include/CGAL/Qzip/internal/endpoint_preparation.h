@@ -43,6 +43,19 @@ class Endpoint_preparation
 
   halfedge_descriptor out(vertex_descriptor a, vertex_descriptor b) const { return halfedge(a, b, pm).first; }
 
+  // the two other corners of the quad on the left (or right) of the edge a->b: `near_b` next to b and
+  // `near_a` next to a (left: face(a->b) = (a, b, near_b, near_a); right: face(b->a) = (b, a, near_a, near_b));
+  // false when that face is the border or not a quad
+  bool side_quad_corners(halfedge_descriptor ab, bool left, vertex_descriptor& near_b, vertex_descriptor& near_a) const
+  {
+    const halfedge_descriptor side = left ? ab : opposite(ab, pm);
+    if(is_border(side, pm) || !is_quad(side, pm)) return false;
+    const halfedge_descriptor h = next(side, pm);
+    near_b = left ? target(h, pm) : target(next(h, pm), pm);
+    near_a = left ? target(next(h, pm), pm) : target(h, pm);
+    return true;
+  }
+
 public:
   explicit Endpoint_preparation(const PolygonMesh& pm) : pm(pm) {}
 
@@ -76,12 +89,9 @@ public:
       case Strip_operation::RIGHT_COLLAPSE:
       {
         const bool left = last == Strip_operation::LEFT_COLLAPSE;
-        const halfedge_descriptor side = left ? ut : opposite(ut, pm);
-        if(is_border(side, pm) || !is_quad(side, pm)) return Plan_status::BORDER_OR_CONSTRAINED;
         // LC: face(u->t) = (u, t, x, n); RC: face(t->u) = (t, u, n, x)
-        const halfedge_descriptor h = left ? next(ut, pm) : next(opposite(ut, pm), pm);
-        const vertex_descriptor x = left ? target(h, pm) : target(next(h, pm), pm);
-        const vertex_descriptor nb = left ? target(next(h, pm), pm) : target(h, pm);
+        vertex_descriptor x, nb;
+        if(!side_quad_corners(ut, left, x, nb)) return Plan_status::BORDER_OR_CONSTRAINED;
         if(!is_usable(x) || !is_usable(nb)) return Plan_status::ENDPOINT_ADJUSTMENT;
         path.back() = nb;
         path.push_back(x);
@@ -110,12 +120,9 @@ public:
     {
       if(is_split(first)) { ops[0] = Strip_operation::NO_OPERATION; return Plan_status::REALIZABLE; }
       const bool left = first == Strip_operation::LEFT_COLLAPSE;
-      const halfedge_descriptor side = left ? sv : opposite(sv, pm);
-      if(is_border(side, pm) || !is_quad(side, pm)) return Plan_status::BORDER_OR_CONSTRAINED;
       // LC: face(s->v1) = (s, v1, d, n); RC: face(v1->s) = (v1, s, n, d)
-      const halfedge_descriptor h = left ? next(sv, pm) : next(opposite(sv, pm), pm);
-      const vertex_descriptor d = left ? target(h, pm) : target(next(h, pm), pm);
-      const vertex_descriptor nb = left ? target(next(h, pm), pm) : target(h, pm);
+      vertex_descriptor d, nb;
+      if(!side_quad_corners(sv, left, d, nb)) return Plan_status::BORDER_OR_CONSTRAINED;
       if(!is_usable(d) || !is_usable(nb)) return Plan_status::ENDPOINT_ADJUSTMENT;
       path[0] = d;
       path.insert(path.begin(), nb);
