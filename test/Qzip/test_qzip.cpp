@@ -1,8 +1,10 @@
 // Tests of the Q-zip primitive: planning, execution, invariants, undo, homotopy invariance, refusals.
 #include "qzip_test_utils.h"
+#include "reverse_qzip_tests.h"
 
 #include <CGAL/Qzip/qzip.h>
 #include <CGAL/Qzip/preprocess.h>
+#include <CGAL/Qzip/singularities.h>
 
 #include <CGAL/Random.h>
 
@@ -21,11 +23,21 @@ std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> singular_vert
   return out;
 }
 
+/// what a vertex is as a singularity, recomputed from scratch: 0 if regular, its valence inside,
+/// 100 + its defect (sector rule, from the geometry) on the border
 template <typename Mesh>
-std::vector<int> singular_valences(const Mesh& m)
+int singularity_code(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& m)
+{
+  if(!on_border(v, m)) return valence(v, m) == 4 ? 0 : valence(v, m);
+  const int d = Q::vertex_defect(v, m);
+  return d == 0 ? 0 : 100 + d;
+}
+
+template <typename Mesh>
+std::vector<int> singularity_codes(const Mesh& m)
 {
   std::vector<int> out;
-  for(auto v : singular_vertices(m)) out.push_back(valence(v, m));
+  for(auto v : vertices(m)) if(const int c = singularity_code(v, m)) out.push_back(c);
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -39,25 +51,15 @@ std::vector<Point> sorted_points(const Mesh& m)
   return out;
 }
 
-template <typename Mesh>
-std::vector<int> border_valences(const Mesh& m)
-{
-  std::vector<int> out;
-  for(auto v : vertices(m)) if(on_border(v, m)) out.push_back(valence(v, m));
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 /// What a Q-zip must preserve, measured on the whole mesh before it.
 template <typename Mesh>
 struct Snapshot
 {
   long chi;
   std::size_t faces, quads;
-  std::vector<int> singular, border;
+  std::vector<int> singular; // singularity_codes(): interior valences and border defects
   explicit Snapshot(const Mesh& m)
-    : chi(euler_characteristic(m)), faces(CGAL::faces(m).size()), quads(0), singular(singular_valences(m)),
-      border(border_valences(m))
+    : chi(euler_characteristic(m)), faces(CGAL::faces(m).size()), quads(0), singular(singularity_codes(m))
   {
     for(auto f : CGAL::faces(m)) if(CGAL::halfedges_around_face(halfedge(f, m), m).size() == 4) ++quads;
   }
@@ -85,10 +87,9 @@ void check_done(const Mesh& m, const Snapshot<Mesh>& before, const Q::Qzip_resul
   // every quad is still a quad, every other face untouched; faces change by splits - collapses
   assert(after.faces - before.faces == after.quads - before.quads);
   assert(long(after.faces) - long(before.faces) == long(r.number_of_splits) - long(r.number_of_collapses));
-  assert(after.border == before.border);
-  // no singularity created: the singular valences after are a sub-multiset of those before
+  // no singularity created (inside or on the border): the singularity codes after are a sub-multiset of
+  // those before
   assert(std::includes(before.singular.begin(), before.singular.end(), after.singular.begin(), after.singular.end()));
-  for(int d : after.singular) assert(d == 3 || d == 5 || std::count(before.singular.begin(), before.singular.end(), d) > 0);
   ++c.done;
   if(after.singular != before.singular) { ++c.cancelling; return; }
   if(r.moved_source != boost::graph_traits<Mesh>::null_vertex())
@@ -96,7 +97,7 @@ void check_done(const Mesh& m, const Snapshot<Mesh>& before, const Q::Qzip_resul
     ++c.located;
     assert(r.moved_target != boost::graph_traits<Mesh>::null_vertex());
     assert(!on_border(r.moved_source, m) && valence(r.moved_source, m) != 4);
-    assert(!on_border(r.moved_target, m) && valence(r.moved_target, m) != 4);
+    assert(singularity_code(r.moved_target, m) != 0);
   }
   for(auto f : r.scar_faces) assert(CGAL::halfedges_around_face(halfedge(f, m), m).size() == 4);
 }
@@ -393,7 +394,7 @@ std::size_t random_qzips(Mesh& m, std::size_t count, unsigned seed, Counters& c)
       ++c.rolled_back;
       assert(r.failure != Q::Execution_failure::NONE);
       assert(history.size() == recorded);
-      assert(CGAL::is_valid_polygon_mesh(m) && singular_valences(m) == before.singular);
+      assert(CGAL::is_valid_polygon_mesh(m) && singularity_codes(m) == before.singular);
       continue;
     }
     assert(history.size() == recorded + 1);
@@ -534,6 +535,139 @@ void run_corpus_file(const std::string& path, std::size_t count, unsigned seed, 
   std::cout << "  " << path << ": " << n << " Q-zips undone exactly" << std::endl;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Border end points: the terminal singularity is a border vertex with one quad too many
+
+/// a grid whose bottom border carries steps (a border vertex with three quads next to one with one
+/// quad) and whose inside carries the 3-5 pairs that made them: each is planted by collapsing, from
+/// (i, k) straight down to the border, the quads on one side of the column, as a Q-zip chain would.
+template <typename Mesh>
+void make_grid_with_border_steps(Mesh& m, unsigned seed)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  const int nx = 30, ny = 16;
+  make_quad_grid(m, nx, ny);
+  std::map<std::pair<int, int>, vertex_descriptor> at;
+  for(vertex_descriptor v : vertices(m))
+  {
+    const Point& p = get(CGAL::vertex_point, m, v);
+    at[std::make_pair(int(p.x()), int(p.y()))] = v;
+  }
+  CGAL::Random rng(seed);
+  for(int column : { rng.get_int(3, 9), rng.get_int(13, 19), rng.get_int(22, 27) })
+  {
+    const int k = rng.get_int(3, 11);
+    const bool east = rng.get_bool();
+    for(int j = k; j >= 1; --j)
+    {
+      const auto o = halfedge(at[std::make_pair(column, j)], at[std::make_pair(column, j - 1)], m).first;
+      const auto h = east ? o : prev(opposite(o, m), m);
+      assert(Q::can_collapse_quad(h, m));
+      Q::quad_collapse(h, m);
+    }
+  }
+  // unfold: every inside vertex at the centroid of its neighbours (the border is convex and fixed)
+  for(int iteration = 0; iteration < 300; ++iteration)
+    for(vertex_descriptor v : vertices(m))
+    {
+      if(on_border(v, m)) continue;
+      double x = 0, y = 0, n = 0;
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+      {
+        const Point& p = get(CGAL::vertex_point, m, source(h, m));
+        x += p.x(); y += p.y(); n += 1;
+      }
+      put(get(CGAL::vertex_point, m), v, Point(x / n, y / n, 0));
+    }
+}
+
+/// every pair (interior singularity, border vertex with defect +1) at most `max_length` edges apart,
+/// in the four motions: executed Q-zips keep every invariant (border defects included), a located
+/// border end lands on the plan's last vertex, and the history gives back the mesh.
+template <typename Mesh>
+void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::size_t& border_moves)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  Mesh original;
+  copy_mesh(m, original);
+  std::vector<vertex_descriptor> sources, targets;
+  for(vertex_descriptor v : vertices(m))
+  {
+    if(on_border(v, m)) { if(Q::vertex_defect(v, m) == 1) targets.push_back(v); }
+    else if(valence(v, m) == 3 || valence(v, m) == 5) sources.push_back(v);
+  }
+  // pairs by position: an undo may give re-created vertices new descriptors (Polyhedron_3)
+  std::vector<std::pair<Point, Point> > pairs;
+  for(vertex_descriptor t : targets)
+    for(vertex_descriptor s : sources)
+    {
+      const auto path = Q::shortest_surgery_path(m, s, t);
+      if(path.size() >= 2 && path.size() <= max_length + 1)
+        pairs.emplace_back(get(CGAL::vertex_point, m, s), get(CGAL::vertex_point, m, t));
+    }
+  std::map<Point, vertex_descriptor> at;
+  for(const auto& pair : pairs)
+    for(int motion = 0; motion < 4; ++motion)
+    {
+      if(at.empty())
+        for(vertex_descriptor v : vertices(m)) at[get(CGAL::vertex_point, m, v)] = v;
+      const auto sketch = Q::shortest_surgery_path(m, at.at(pair.first), at.at(pair.second));
+      const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion));
+      if(!plan.is_realizable()) { ++c.refused; continue; }
+      assert(on_border(plan.path.back(), m) && plan.path[plan.path.size() - 2] == sketch.back());
+      const Snapshot<Mesh> before(m);
+      Q::Qzip_history<Mesh> history(m);
+      const auto r = Q::execute_qzip(m, plan, history);
+      at.clear(); // a roll-back re-creates elements too
+      if(!r.is_done())
+      {
+        ++c.rolled_back;
+        assert(CGAL::is_valid_polygon_mesh(m) && singularity_codes(m) == before.singular);
+        continue;
+      }
+      check_done(m, before, r, c);
+      if(r.moved_target != boost::graph_traits<Mesh>::null_vertex())
+      {
+        assert(r.moved_target == plan.path.back() && on_border(r.moved_target, m));
+        assert(Q::vertex_defect(r.moved_target, m) == 1);
+        ++border_moves;
+      }
+      history.undo_all();
+      assert(CGAL::is_valid_polygon_mesh(m) && are_isomorphic(m, original));
+      assert(sorted_points(m) == sorted_points(original));
+    }
+}
+
+void test_border_endpoints()
+{
+  Counters grid_sm, grid_ph, real;
+  std::size_t moves_sm = 0, moves_ph = 0, moves_real = 0;
+  for(unsigned seed = 1; seed <= 4; ++seed)
+  {
+    Surface_mesh sm;
+    make_grid_with_border_steps(sm, seed);
+    border_endpoint_qzips(sm, 14, grid_sm, moves_sm);
+    Polyhedron ph;
+    make_grid_with_border_steps(ph, seed);
+    border_endpoint_qzips(ph, 14, grid_ph, moves_ph);
+  }
+  grid_sm.print("border end points, planted grids, Surface_mesh");
+  grid_ph.print("border end points, planted grids, Polyhedron_3");
+  assert(grid_sm.done == grid_ph.done && moves_sm == moves_ph);
+  assert(moves_sm > 0 && grid_sm.cancelling > 0); // the border defect moves, or cancels a neighbour one
+  for(const char* f : { "data/polylap_suzanne_half.obj", "data/trimesh_target.obj" })
+  {
+    Surface_mesh m;
+    const bool ok = read_mesh(f, m);
+    assert(ok);
+    border_endpoint_qzips(m, 10, real, moves_real);
+  }
+  real.print("border end points, bundled meshes with borders");
+  assert(moves_real > 0);
+  std::cout << "  border defects moved by one edge: " << moves_sm << " + " << moves_ph << " (grids), "
+            << moves_real << " (bundled meshes)" << std::endl;
+}
+
 int main(int argc, char** argv)
 {
   const std::size_t per_mesh = argc > 1 ? std::size_t(std::atoi(argv[1])) : 150;
@@ -558,6 +692,10 @@ int main(int argc, char** argv)
 
   test_refusals_and_parameters();
   std::cout << "  refusals, constraints, visitor and named parameters ok" << std::endl;
+
+  test_border_endpoints();
+
+  test_reverse_qzip(per_mesh / 3);
 
   Counters random_sm, random_ph;
   for(const std::string f : { "data/polylap_amo_quad.off", "data/pmp_fandisk_quads.off", "data/polylap_suzanne_half.obj",

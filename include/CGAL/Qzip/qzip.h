@@ -20,11 +20,29 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
+#include <functional>
 #include <memory>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
 namespace Qzip {
+
+/*!
+\ingroup PkgQzipPrimitive
+Whether a done Q-zip can be undone by its reverse Q-zip (`reverse_qzip()`), or why not.
+*/
+enum class Reverse_qzip_status
+{
+  AVAILABLE,               ///< `Qzip_result::reverse_plan` undoes the Q-zip
+  NOT_DONE,                ///< the Q-zip was not carried out: there is nothing to undo
+  SINGULARITIES_CANCELLED, ///< the Q-zip cancelled singularities, and a Q-zip never creates any
+  CLEANED_UP,              ///< the chain left a valence-2 or valence-6 vertex that the clean-up removed or split
+  PATH_VERTEX_MERGED,      ///< a collapse of the chain merged away a vertex of the path it had already visited
+  GUIDE_NOT_RESTORABLE     ///< two consecutive collapses of the chain share no corner the reverse split can be guided by
+};
 
 /*!
 \ingroup PkgQzipPrimitive
@@ -53,6 +71,12 @@ struct Qzip_result
   std::vector<vertex_descriptor> touched_vertices; ///< live vertices whose neighbourhood or position changed
   Execution_failure failure = Execution_failure::NONE; ///< why the execution was rolled back, if it was
   std::size_t failed_step = 0;                     ///< index in `plan.path` of the vertex where it was
+  /// whether `reverse_plan` is available, or why not
+  Reverse_qzip_status reverse_status = Reverse_qzip_status::NOT_DONE;
+  /// the reverse Q-zip (see `reverse_qzip()`): a plan on the mesh after this Q-zip whose execution gives
+  /// back the mesh before it, up to isomorphism; meaningful when `reverse_status` is `AVAILABLE`.
+  /// Its `source` and `target` are the ends of its path, which need not be singular.
+  Surgery_plan<PolygonMesh> reverse_plan;
 
   /// `true` when the Q-zip was carried out.
   bool is_done() const { return status == Plan_status::REALIZABLE; }
@@ -93,6 +117,166 @@ public:
   /// \endcond
 };
 
+namespace internal {
+
+// The reverse Q-zip (paper, Sec. 2.8), derived from the executor (see Chain_executor and the user manual,
+// section "Undo by a Reverse Q-zip"). Step j of the chain works at v = path[j] towards w = path[j+1] and
+// takes the mesh M_j to M_{j+1}; its inverse is a step of the reverse chain at w towards v:
+//   LS/RS: v was split into the quad (v, w, c, y), y the guide's end; the inverse collapses that quad
+//          keeping v: LC at w, which leaves the guide v->y, the one step j received.
+//   RC/LC: the corner z of the quad beside v->w was merged into w, leaving the guide w->x (x the other
+//          kept corner); the inverse splits w between v and x: a split at w guided by w->x (after RC the
+//          executor gives the new vertex w's fan and w keeps z's, the same mesh up to naming). Its tag only
+//          decides the guide it leaves at v, which matters when step j-1 was a collapse too: the next
+//          reverse step splits v and needs v->x', x' the corner kept by step j-1. x' is z (RS after RC,
+//          LS after LC: the compass rotated by pi) or w (LS after RC, RS after LC); both are recorded.
+//   NOOP: nothing to undo.
+// The reverse chain thus walks the path backwards; when it starts with a split, it starts one vertex
+// earlier, at the corner kept by the last collapse, with a no-operation that provides the guide.
+// Every vertex of the path must still exist (no collapse may have merged one away), the clean-up must not
+// have run (its collapse or split is not a chain step), and no singularity may have been cancelled (a
+// Q-zip never creates one). The recorder watches the chain as a visitor and forwards every call to the
+// user's visitor.
+template <typename PolygonMesh, typename UserVisitor>
+class Reverse_recorder
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef boost::hash<vertex_descriptor> Vertex_hash;
+
+  const Surgery_plan<PolygonMesh>& plan;
+  UserVisitor user;
+  std::vector<std::size_t> collapse_steps;  // indices in plan.path of the chain's collapses
+  std::vector<Strip_operation> reverse_ops; // the reverse tag of each step, indexed like plan.path
+  std::size_t collapses_seen = 0;
+  vertex_descriptor kept_corner = GT::null_vertex(); // x of the last chain collapse
+  Reverse_qzip_status refusal = Reverse_qzip_status::AVAILABLE;
+  // valence of every pre-existing interior vertex before its first operation, -1 for border vertices
+  std::unordered_map<vertex_descriptor, int, Vertex_hash> first_valence;
+  std::unordered_set<vertex_descriptor, Vertex_hash> created;
+  halfedge_descriptor last_split = GT::null_halfedge();
+
+  // the vertex created by the previous split, known once it is done: the split returned h2 = d->v on
+  // the new quad (v, b, c, d)
+  void settle(const PolygonMesh& pm)
+  {
+    if(last_split == GT::null_halfedge()) return;
+    created.insert(target(next(next(last_split, pm), pm), pm));
+    last_split = GT::null_halfedge();
+  }
+
+  void see(vertex_descriptor v, const PolygonMesh& pm)
+  {
+    if(created.count(v) == 0 && first_valence.count(v) == 0)
+      first_valence.emplace(v, is_border_vertex(v, pm) ? -1 : int(valence(v, pm)));
+  }
+
+public:
+  Reverse_recorder(const Surgery_plan<PolygonMesh>& plan, UserVisitor user)
+    : plan(plan), user(user), reverse_ops(plan.path.size(), Strip_operation::NO_OPERATION)
+  {
+    for(std::size_t j = 0; j + 1 < plan.path.size(); ++j)
+    {
+      const Strip_operation op = plan.operations[j];
+      if(is_collapse(op)) collapse_steps.push_back(j);
+      else if(is_split(op)) reverse_ops[j] = Strip_operation::LEFT_COLLAPSE;
+    }
+  }
+
+  void on_qzip_started(const Surgery_plan<PolygonMesh>& p) { user.on_qzip_started(p); }
+
+  void on_collapse(halfedge_descriptor h, const PolygonMesh& pm)
+  {
+    settle(pm);
+    // face(h) = (d, a, b, c): c is merged into a; RC: h = v->w, so a = w, b = x, d = v; LC: h = x->w, b = v, d = x
+    const vertex_descriptor a = target(h, pm), b = target(next(h, pm), pm);
+    const vertex_descriptor c = target(next(next(h, pm), pm), pm), d = source(h, pm);
+    for(vertex_descriptor v : { a, b, c, d }) see(v, pm);
+    if(collapses_seen < collapse_steps.size())
+    {
+      const std::size_t j = collapse_steps[collapses_seen];
+      const Strip_operation op = plan.operations[j];
+      const auto visited_end = plan.path.begin() + std::ptrdiff_t(j + 1);
+      if(std::find(plan.path.begin(), visited_end, c) != visited_end) refusal = Reverse_qzip_status::PATH_VERTEX_MERGED;
+      if(j == 0 || !is_collapse(plan.operations[j - 1]) || kept_corner == c) reverse_ops[j] = rotate(op, 2);
+      else if(kept_corner == a)
+        reverse_ops[j] = op == Strip_operation::RIGHT_COLLAPSE ? Strip_operation::LEFT_SPLIT : Strip_operation::RIGHT_SPLIT;
+      else if(refusal == Reverse_qzip_status::AVAILABLE) refusal = Reverse_qzip_status::GUIDE_NOT_RESTORABLE;
+      kept_corner = b == plan.path[j] ? d : b;
+    }
+    ++collapses_seen;
+    user.on_collapse(h, pm);
+  }
+
+  void on_split(halfedge_descriptor h1, halfedge_descriptor h2, const PolygonMesh& pm)
+  {
+    settle(pm);
+    for(vertex_descriptor v : { target(h1, pm), source(h1, pm), source(h2, pm) }) see(v, pm);
+    last_split = h2;
+    user.on_split(h1, h2, pm);
+  }
+
+  void on_qzip_finished(const Surgery_plan<PolygonMesh>& p, bool done)
+  {
+    last_split = GT::null_halfedge();
+    user.on_qzip_finished(p, done);
+  }
+
+  // fills r.reverse_status and r.reverse_plan after the execution
+  void make_reverse(const PolygonMesh& pm, Qzip_result<PolygonMesh>& r) const
+  {
+    if(!r.is_done()) return;
+    if(r.number_of_cleanups != 0) { r.reverse_status = Reverse_qzip_status::CLEANED_UP; return; }
+    if(refusal != Reverse_qzip_status::AVAILABLE) { r.reverse_status = refusal; return; }
+    std::size_t singular_before = 0, singular_after = 0;
+    for(const auto& kv : first_valence) if(kv.second != -1 && kv.second != 4) ++singular_before;
+    for(vertex_descriptor v : r.touched_vertices) if(!is_border_vertex(v, pm) && valence(v, pm) != 4) ++singular_after;
+    if(singular_after < singular_before) { r.reverse_status = Reverse_qzip_status::SINGULARITIES_CANCELLED; return; }
+
+    const std::size_t n = plan.path.size();
+    Surgery_plan<PolygonMesh>& rev = r.reverse_plan;
+    rev.path.assign(plan.path.rbegin(), plan.path.rend());
+    rev.operations.assign(reverse_ops.rbegin() + 1, reverse_ops.rend());
+    rev.operations.push_back(Strip_operation::NO_OPERATION);
+    if(is_split(rev.operations[0]))
+    {
+      rev.path.insert(rev.path.begin(), kept_corner);
+      rev.operations.insert(rev.operations.begin(), Strip_operation::NO_OPERATION);
+    }
+    CGAL_assertion(rev.path.size() == rev.operations.size() && rev.path.size() >= n);
+    rev.sketch = rev.path;
+    rev.source = rev.path.front();
+    rev.target = rev.path.back();
+    rev.source_valence = plan.target_valence; // the reverse moves the pair back: t' first, then s'
+    rev.target_valence = plan.source_valence;
+    rev.initial_operation = *std::find_if(rev.operations.begin(), rev.operations.end(),
+                                          [](Strip_operation op) { return op != Strip_operation::NO_OPERATION; });
+    rev.status = Plan_status::REALIZABLE;
+    r.reverse_status = Reverse_qzip_status::AVAILABLE;
+  }
+};
+
+// runs `plan` through a Chain_executor on `log`, recording its reverse Q-zip
+template <typename PolygonMesh, typename VertexPointMap, typename NamedParameters>
+Qzip_result<PolygonMesh> run_qzip(PolygonMesh& pm, Operation_log<PolygonMesh, VertexPointMap>& log,
+                                  const Surgery_plan<PolygonMesh>& plan, const NamedParameters& np)
+{
+  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::visitor_t, NamedParameters,
+            Default_qzip_visitor<PolygonMesh> >::reference User_visitor;
+  Default_qzip_visitor<PolygonMesh> default_visitor;
+  User_visitor user = parameters::choose_parameter(parameters::get_parameter_reference(np, CGAL::internal_np::visitor),
+                                                   default_visitor);
+  Reverse_recorder<PolygonMesh, User_visitor> recorder(plan, user);
+  const auto np_recording = np.visitor(std::ref(recorder));
+  Chain_executor<PolygonMesh, VertexPointMap, std::decay_t<decltype(np_recording)> > exec(pm, log, np_recording);
+  Qzip_result<PolygonMesh> r = exec.run(plan);
+  recorder.make_reverse(pm, r);
+  return r;
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgQzipPrimitive
 
@@ -120,7 +304,8 @@ the mesh is combinatorially and geometrically as before (re-created elements may
     \cgalParamDefault{no visitor}
   \cgalParamNEnd
 \cgalNamedParamsEnd
-\returns what was done; `result.status` is `REALIZABLE` on success.
+\returns what was done; `result.status` is `REALIZABLE` on success. A done Q-zip also carries its
+         reverse Q-zip (`result.reverse_plan`, see `reverse_qzip()`) or the reason why there is none.
 */
 template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
 Qzip_result<PolygonMesh> execute_qzip(PolygonMesh& pm, const Surgery_plan<PolygonMesh>& plan,
@@ -129,8 +314,7 @@ Qzip_result<PolygonMesh> execute_qzip(PolygonMesh& pm, const Surgery_plan<Polygo
   auto vpm = parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                           get_property_map(vertex_point, pm));
   internal::Operation_log<PolygonMesh, decltype(vpm)> log(pm, vpm);
-  internal::Chain_executor<PolygonMesh, decltype(vpm), NamedParameters> exec(pm, log, np);
-  return exec.run(plan);
+  return internal::run_qzip(pm, log, plan, np);
 }
 
 /*!
@@ -143,8 +327,7 @@ Qzip_result<PolygonMesh> execute_qzip(PolygonMesh& pm, const Surgery_plan<Polygo
                                       Qzip_history<PolygonMesh, VertexPointMap>& history,
                                       const NamedParameters& np = parameters::default_values())
 {
-  internal::Chain_executor<PolygonMesh, VertexPointMap, NamedParameters> exec(pm, history.operation_log(), np);
-  return exec.run(plan);
+  return internal::run_qzip(pm, history.operation_log(), plan, np);
 }
 
 /*!
@@ -156,6 +339,39 @@ template <typename PolygonMesh, typename VertexPointMap>
 void undo_qzip(Qzip_history<PolygonMesh, VertexPointMap>& history)
 {
   history.undo_last();
+}
+
+/*!
+\ingroup PkgQzipPrimitive
+
+undoes the Q-zip that produced `done` by its reverse Q-zip (paper, Sec. 2.8), without any record of its
+atomic operations: `done.reverse_plan` walks the adjusted path of the Q-zip backwards, from the moved
+terminal singularity towards the moved initial one, with the inverse strip operations, and is executed
+with `execute_qzip()`. The mesh comes back up to isomorphism: the connectivity is the one before the
+Q-zip (the elements re-created have new descriptors), the positions are not restored (the atomic
+operations place the vertices as usual). The result carries in turn the reverse of the reverse, which
+redoes the Q-zip.
+
+A Q-zip has a reverse Q-zip unless (see `Reverse_qzip_status`) it cancelled singularities (a Q-zip never
+creates any), it needed the valence-2/valence-6 clean-up, or one of its collapses merged away a vertex of
+the path it had already visited (the end adjustment of a valence-5 terminal singularity with a collapse
+does so); `done.reverse_status` says which. Like every execution the reverse is transactional: if it
+cannot be completed the mesh is restored.
+
+\tparam PolygonMesh a model of `MutableFaceGraph`
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+\param pm the polygon mesh, unchanged since the Q-zip that returned `done`
+\param done the result of that Q-zip
+\param np the named parameters of `execute_qzip()`
+\returns the result of the execution; when `done.reverse_status` is not `AVAILABLE`, the mesh is not
+         touched and the status is `Plan_status::INVALID_PATH`.
+*/
+template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+Qzip_result<PolygonMesh> reverse_qzip(PolygonMesh& pm, const Qzip_result<PolygonMesh>& done,
+                                      const NamedParameters& np = parameters::default_values())
+{
+  if(done.reverse_status != Reverse_qzip_status::AVAILABLE) return Qzip_result<PolygonMesh>();
+  return execute_qzip(pm, done.reverse_plan, np);
 }
 
 /*!

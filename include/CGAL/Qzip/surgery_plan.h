@@ -15,6 +15,7 @@
 #include <CGAL/Qzip/Named_function_parameters.h>
 #include <CGAL/Qzip/internal/rotation.h>
 #include <CGAL/Qzip/internal/endpoint_preparation.h>
+#include <CGAL/Qzip/singularities.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -175,12 +176,25 @@ plan_qzip(const PolygonMesh& pm,
   plan.target = sketch.back();
   plan.source_valence = int(internal::valence(plan.source, pm));
   plan.target_valence = int(internal::valence(plan.target, pm));
-  for(vertex_descriptor e : { plan.source, plan.target })
+  if((plan.source_valence != 3 && plan.source_valence != 5) || internal::is_border_vertex(plan.source, pm))
+  { plan.status = Plan_status::UNSUPPORTED_ENDPOINT; return plan; }
+  // a border target is supported on a straight piece of border (two quads expected, three present);
+  // its defect moves to a border neighbour on a straight piece too, or cancels the defect of a
+  // neighbour with one quad (checked after the preparation)
+  auto defect_and_expected_faces = [&](vertex_descriptor v)
   {
-    const std::size_t d = internal::valence(e, pm);
-    if((d != 3 && d != 5) || internal::is_border_vertex(e, pm))
-    { plan.status = Plan_status::UNSUPPORTED_ENDPOINT; return plan; }
-  }
+    return internal::with_defect_parameters(pm, np, [&](const auto& vpm, const auto& ecm_, const auto& gt)
+    {
+      const internal::Vertex_defect_info info = internal::vertex_defect_info(v, pm, vpm, ecm_, gt);
+      std::size_t faces = 0;
+      for(auto h : halfedges_around_target(halfedge(v, pm), pm)) if(!is_border(h, pm)) ++faces;
+      return std::make_pair(info.defect, int(faces) - info.defect);
+    });
+  };
+  const bool border_target = internal::is_border_vertex(plan.target, pm);
+  const bool target_supported = border_target ? defect_and_expected_faces(plan.target) == std::make_pair(1, 2)
+                                              : (plan.target_valence == 3 || plan.target_valence == 5);
+  if(!target_supported) { plan.status = Plan_status::UNSUPPORTED_ENDPOINT; return plan; }
 
   plan.path = sketch;
   plan.operations.assign(sketch.size(), Strip_operation::NO_OPERATION);
@@ -201,11 +215,18 @@ plan_qzip(const PolygonMesh& pm,
   if(st == Plan_status::REALIZABLE && retransport_from > 0)
     internal::transport_compass(plan.path, plan.operations, (std::min)(retransport_from, first_fold + 1), pm);
   const Strip_operation start_tag = plan.operations[0];
-  if(st == Plan_status::REALIZABLE) st = prep.prepare_end(plan.path, plan.operations, initial_operation, transport);
+  if(st == Plan_status::REALIZABLE)
+    st = border_target ? prep.prepare_border_end(plan.path, plan.operations)
+                       : prep.prepare_end(plan.path, plan.operations, initial_operation, transport);
   if(st == Plan_status::REALIZABLE && plan.path[0] == plan.source && plan.operations[0] != start_tag &&
      is_split(plan.operations[0]))
     st = prep.prepare_start(plan.path, plan.operations, retransport_from);
   if(st == Plan_status::REALIZABLE) st = prep.remove_folds(plan.path, plan.operations, first_fold);
+  if(st == Plan_status::REALIZABLE && border_target)
+  {
+    const std::pair<int, int> e = defect_and_expected_faces(plan.path.back()); // regular, or one quad short: cancels
+    if(e.second != 2 || (e.first != 0 && e.first != -1)) st = Plan_status::ENDPOINT_ADJUSTMENT;
+  }
   if(st == Plan_status::REALIZABLE && !internal::is_simple_edge_path(plan.path, pm))
     st = Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT;
   if(st != Plan_status::REALIZABLE) { plan.status = st; return plan; }
@@ -214,10 +235,12 @@ plan_qzip(const PolygonMesh& pm,
   // away from the border (collapses of border faces) and from features and protected faces.
   // (faces that are not quads may be next to the path: no collapse is ever attempted on them, splits
   // keep their degree, and the executor checks every operation)
+  // (a border target is the one path vertex allowed on the border: its incident quads are part of the move)
   for(vertex_descriptor v : plan.path)
     for(auto h : halfedges_around_target(halfedge(v, pm), pm))
     {
-      if(is_border_edge(h, pm) || get(ecm, edge(h, pm)) || get(fcm, face(h, pm)))
+      const bool border_ok = border_target && (v == plan.target || v == plan.path.back());
+      if((is_border_edge(h, pm) && !border_ok) || get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm))))
       { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
     }
   plan.status = plan.number_of_collapses() + plan.number_of_splits() == 0 ? Plan_status::NOTHING_TO_DO

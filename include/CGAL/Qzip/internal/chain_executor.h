@@ -14,6 +14,9 @@
 #include <CGAL/Qzip/Qzip_visitor_base.h>
 #include <CGAL/Qzip/internal/operation_log.h>
 #include <CGAL/Qzip/internal/rotation.h>
+#include <CGAL/Qzip/internal/vertex_defect.h>
+
+#include <CGAL/Kernel_traits.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -63,7 +66,11 @@ class Chain_executor
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::visitor_t, NamedParameters,
             Default_qzip_visitor<PolygonMesh> >::reference Visitor;
 
-  struct Before { int valence; bool border; };
+  typedef typename Kernel_traits<Point>::Kernel Geom_traits;
+
+  // what a vertex is as a singularity: 0 when regular, its valence when it is an interior vertex away
+  // from features, 100 + its defect (paper's sector rule) on the border or on a feature
+  struct Before { int valence; bool border; int code; };
 
   PolygonMesh& pm;
   Operation_log<PolygonMesh, VertexPointMap>& log;
@@ -73,6 +80,7 @@ class Chain_executor
   Visitor visitor;
 
   std::unordered_map<vertex_descriptor, Before, Vertex_hash> before;
+  std::unordered_map<vertex_descriptor, int, Vertex_hash> ideal;
   std::unordered_set<vertex_descriptor, Vertex_hash> alive, created;
   std::unordered_set<face_descriptor, Face_hash> new_faces;
   // the same vertices and faces in the order they appeared, so that every decision and every output
@@ -98,6 +106,8 @@ public:
     r.status = plan.status;
     if(!plan.is_realizable()) return r;
     const Point source_at = get(log_vpm(), plan.source), target_at = get(log_vpm(), plan.target);
+    source_code = singularity_code(plan.source);
+    target_code = singularity_code(plan.target);
     visitor.on_qzip_started(plan);
     log.mark();
     Execution_failure failure = Execution_failure::NONE;
@@ -121,7 +131,7 @@ public:
     std::unordered_set<face_descriptor, Face_hash> listed;
     for(face_descriptor f : face_order)
       if(new_faces.count(f) != 0 && listed.insert(f).second) r.scar_faces.push_back(f);
-    locate_moved_pair(plan, source_at, target_at, r);
+    locate_moved_pair(source_at, target_at, r);
     visitor.on_qzip_finished(plan, true);
     return r;
   }
@@ -133,7 +143,7 @@ private:
   {
     if(before.count(v) == 0 && created.count(v) == 0)
     {
-      before[v] = Before{ int(valence(v, pm)), is_border_vertex(v, pm) };
+      before[v] = Before{ int(valence(v, pm)), is_border_vertex(v, pm), singularity_code(v) };
       alive.insert(v);
       vertex_order.push_back(v);
     }
@@ -184,6 +194,7 @@ private:
     const vertex_descriptor c = target(next(next(last_quad, pm), pm), pm);
     alive.insert(c);
     created.insert(c);
+    if(is_border_vertex(c, pm)) ideal.emplace(c, 2);
     vertex_order.push_back(c);
     new_faces.insert(face(last_quad, pm));
     face_order.push_back(face(last_quad, pm));
@@ -275,28 +286,52 @@ private:
     return false;
   }
 
-  // no singularity was created: the irregular valences of the touched vertices after the surgery form
+  // the number of faces a border or feature vertex should have, from the geometry before the surgery
+  // (frozen at the first look: the chain moves vertices, and a defect is a matter of connectivity); a
+  // border vertex created by a split sits on a straight piece of border and should have two
+  int ideal_number_of_faces(vertex_descriptor v)
+  {
+    auto it = ideal.find(v);
+    if(it != ideal.end()) return it->second;
+    const Vertex_defect_info info = vertex_defect_info(v, pm, log_vpm(), ecm, Geom_traits());
+    const int n = int(number_of_faces_around(v)) - info.defect;
+    ideal.emplace(v, n);
+    return n;
+  }
+
+  std::size_t number_of_faces_around(vertex_descriptor v) const
+  {
+    std::size_t n = 0;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      if(!is_border(h, pm)) ++n;
+    return n;
+  }
+
+  int singularity_code(vertex_descriptor v)
+  {
+    if(is_border_vertex(v, pm) || constrained_around(v))
+    {
+      const int defect = int(number_of_faces_around(v)) - ideal_number_of_faces(v);
+      return defect == 0 ? 0 : 100 + defect;
+    }
+    const int d = int(valence(v, pm));
+    return d == 4 ? 0 : d;
+  }
+
+  // no singularity was created: the singularity codes of the touched vertices after the surgery form
   // a sub-multiset of those before (a Q-zip whose path passes other singularities may cancel some of
-  // them in complementary pairs, never add one), and no border vertex changed valence.
-  bool valences_preserved() const
+  // them in complementary pairs, never add one), and no interior vertex reached the border.
+  bool valences_preserved()
   {
     std::vector<int> was, is;
     for(const auto& kv : before)
-    {
-      if(kv.second.border)
-      {
-        if(alive.count(kv.first) == 0 || created.count(kv.first) != 0) return false;
-        if(int(valence(kv.first, pm)) != kv.second.valence) return false;
-      }
-      else if(kv.second.valence != 4) was.push_back(kv.second.valence);
-    }
+      if(kv.second.code != 0) was.push_back(kv.second.code);
     for(vertex_descriptor v : alive)
     {
       const bool pre = before.count(v) != 0 && created.count(v) == 0;
-      if(pre && before.at(v).border) continue;
-      if(is_border_vertex(v, pm)) return false; // an interior vertex reached the border
-      const int d = int(valence(v, pm));
-      if(d != 4) is.push_back(d);
+      if(is_border_vertex(v, pm) && !(pre ? before.at(v).border : true)) return false;
+      const int c = singularity_code(v);
+      if(c != 0) is.push_back(c);
     }
     std::sort(was.begin(), was.end());
     std::sort(is.begin(), is.end());
@@ -305,32 +340,31 @@ private:
 
   // the singular vertices of the scar that are new or changed, assigned to the source and the target
   // by type, or by distance to their old positions for pairs of the same type.
-  void locate_moved_pair(const Surgery_plan<PolygonMesh>& plan, const Point& source_at, const Point& target_at,
-                         Qzip_result<PolygonMesh>& r) const
+  void locate_moved_pair(const Point& source_at, const Point& target_at, Qzip_result<PolygonMesh>& r)
   {
     std::vector<vertex_descriptor> moved;
     for(vertex_descriptor v : live_vertices_in_order())
     {
-      const int d = int(valence(v, pm));
-      if(d == 4 || is_border_vertex(v, pm)) continue;
+      const int c = singularity_code(v);
+      if(c == 0) continue;
       const bool pre = before.count(v) != 0 && created.count(v) == 0;
-      if(!pre || before.at(v).valence != d) moved.push_back(v);
+      if(!pre || before.at(v).code != c) moved.push_back(v);
     }
     if(moved.size() != 2) return;
-    const int ds = plan.source_valence, dt = plan.target_valence;
     bool swap = false;
-    if(ds != dt) swap = int(valence(moved[0], pm)) != ds;
+    if(source_code != target_code) swap = singularity_code(moved[0]) != source_code;
     else
     {
       auto dist = [this](vertex_descriptor v, const Point& p) { return CGAL::squared_distance(get(log_vpm(), v), p); };
       swap = dist(moved[0], source_at) + dist(moved[1], target_at) > dist(moved[1], source_at) + dist(moved[0], target_at);
     }
     if(swap) std::swap(moved[0], moved[1]);
-    if(int(valence(moved[0], pm)) != ds || int(valence(moved[1], pm)) != dt) return;
+    if(singularity_code(moved[0]) != source_code || singularity_code(moved[1]) != target_code) return;
     r.moved_source = moved[0];
     r.moved_target = moved[1];
   }
 
+  int source_code = 0, target_code = 0;
   Split_delimiters<PolygonMesh> last_delimiters;
   halfedge_descriptor last_quad;
   std::size_t failed_step = 0;

@@ -105,6 +105,31 @@ public:
     }
   }
 
+  // A border end t with one quad too many (defect +1; a border end with one quad too few cannot be
+  // reached through interior vertices). The chain goes on by one border edge t->e and t becomes a
+  // split vertex, which hands the defect to e. After LS or RC (the tags that count quads on the left),
+  // e is the border neighbour such that t->e has no face; after LC or RS, the one such that e->t has no
+  // face. And the path must arrive at t next to that border edge after a collapse (e is the first
+  // neighbour counterclockwise from u after RC, the last one after LC), with one edge between them
+  // after a split. Rules found by enumerating every one-edge continuation and every tag on planted grids
+  // and real meshes (user manual, "Border End Points"); other arrivals are refused.
+  Plan_status prepare_border_end(Path& path, Operations& ops) const
+  {
+    const std::size_t n = path.size();
+    const vertex_descriptor t = path[n - 1], u = path[n - 2];
+    const Strip_operation last = ops[n - 2];
+    if(last == Strip_operation::NO_OPERATION) return Plan_status::ENDPOINT_ADJUSTMENT;
+    const bool counts_left = last == Strip_operation::LEFT_SPLIT || last == Strip_operation::RIGHT_COLLAPSE;
+    const int deg = int(valence(t, pm));
+    const int k = last == Strip_operation::RIGHT_COLLAPSE ? 1 : (last == Strip_operation::LEFT_COLLAPSE ? deg - 1 : 2);
+    const halfedge_descriptor te = rotate_outgoing(out(t, u), k, pm);
+    if(!is_border(counts_left ? te : opposite(te, pm), pm)) return Plan_status::ENDPOINT_ADJUSTMENT;
+    path.push_back(target(te, pm));
+    ops[n - 1] = is_collapse(last) ? rotate(last, 2) : last;
+    ops.push_back(Strip_operation::NO_OPERATION);
+    return Plan_status::REALIZABLE;
+  }
+
   // S1-S4: v3 start with a split: no operation at s; v3 start with a collapse: start from the
   // neighbour n on that side and turn along the quad (n, d) towards v1; v5 start with a split: start
   // from the back neighbour n on that side (ccw index 2 or 3 from v1) with no operation; v5 start

@@ -92,13 +92,14 @@ public:
     vertex_ids.unbind(c);
     e.first = halfedge_ids.name(d.first);
     e.second = halfedge_ids.name(d.second);
-    put(vpm, a, CGAL::midpoint(e.moved_from, e.removed_at));
+    if(!is_border_vertex(a, pm)) put(vpm, a, CGAL::midpoint(e.moved_from, e.removed_at)); // the border keeps its shape
     entries.push_back(e);
     return d;
   }
 
   // splits target(h1) (see split_vertex_into_quad()) and moves both copies a third of the way towards
-  // the centroids of their own neighbours.
+  // the centroids of their own neighbours (of their border neighbours for a copy on the border, which
+  // keeps it on a straight border).
   halfedge_descriptor split(halfedge_descriptor h1, halfedge_descriptor h2)
   {
     Entry e;
@@ -156,8 +157,10 @@ private:
   void relax(vertex_descriptor v, const Point& from)
   {
     double x = 0, y = 0, z = 0, n = 0;
+    const bool on_border = is_border_vertex(v, pm);
     for(auto h : halfedges_around_target(halfedge(v, pm), pm))
     {
+      if(on_border && !is_border_edge(h, pm)) continue;
       const Point& p = get(vpm, source(h, pm));
       x += p.x(); y += p.y(); z += p.z(); n += 1;
     }
