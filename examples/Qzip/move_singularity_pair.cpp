@@ -3,9 +3,10 @@
 // usage: move_singularity_pair IN OUT [--source V --target W] [--motion 0-3] [--random N] [--seed S] [--json]
 //
 // The input is preprocessed first (interior valences brought to 3..5). V and W are 0-based vertex indices
-// of the preprocessed mesh (the input's own indices when it needed no preprocessing). Without them, the
-// closest pair of interior singularities is moved; with --random N, N random realizable Q-zips between
-// nearby singularities are performed. --motion picks the initial compass operation (0 LS, 1 RC, 2 LC,
+// of the preprocessed mesh (the input's own indices when it needed no preprocessing); V is an interior
+// singularity, W one too or a border vertex with one quad too many (a border defect, moved along the
+// border). Without them, the closest pair of interior singularities is moved; with --random N, N random
+// realizable Q-zips between nearby singularities (border defects included) are performed. --motion picks the initial compass operation (0 LS, 1 RC, 2 LC,
 // 3 RS); by default the first realizable one. OUT is written atomically; the input is never overwritten.
 
 #include "qzip_example_io.h"
@@ -33,14 +34,21 @@ namespace Q = CGAL::Qzip;
 static const char* usage =
   "usage: move_singularity_pair IN OUT [--source V --target W] [--motion 0-3] [--random N] [--seed S] [--json]";
 
-struct Singularity_count { std::size_t v3 = 0, v5 = 0; };
+// interior v3 and v5, and border vertices with one quad too few (b-) or too many (b+)
+struct Singularity_count { std::size_t v3 = 0, v5 = 0, border_minus = 0, border_plus = 0; };
 
 Singularity_count count_singularities(const Mesh& m)
 {
   Singularity_count c;
   for(Vertex v : vertices(m))
   {
-    if(CGAL::is_border(v, m)) continue;
+    if(CGAL::is_border(v, m))
+    {
+      const int d = Q::vertex_defect(v, m);
+      if(d < 0) c.border_minus += std::size_t(-d);
+      else c.border_plus += std::size_t(d);
+      continue;
+    }
     const std::size_t d = Q::vertex_valence(v, m);
     if(d == 3) ++c.v3;
     else if(d == 5) ++c.v5;
@@ -48,14 +56,23 @@ Singularity_count count_singularities(const Mesh& m)
   return c;
 }
 
+// an interior singularity: a Q-zip may start or end there
 bool is_singular(Vertex v, const Mesh& m)
 {
   const std::size_t d = Q::vertex_valence(v, m);
   return !CGAL::is_border(v, m) && (d == 3 || d == 5);
 }
 
-// the interior singularities within `radius` edges of `s`, closest first
-std::vector<Vertex> nearby_singularities(const Mesh& m, Vertex s, int radius)
+// a border vertex with one quad too many: a Q-zip may end there (plan_qzip() refuses it when the
+// border is not straight there)
+bool is_border_target(Vertex v, const Mesh& m)
+{
+  return CGAL::is_border(v, m) && Q::vertex_defect(v, m) == 1;
+}
+
+// the interior singularities (and, with `border`, the border targets) within `radius` edges of `s`,
+// closest first
+std::vector<Vertex> nearby_singularities(const Mesh& m, Vertex s, int radius, bool border = false)
 {
   std::map<Vertex, int> dist;
   std::deque<Vertex> queue(1, s);
@@ -64,7 +81,7 @@ std::vector<Vertex> nearby_singularities(const Mesh& m, Vertex s, int radius)
   while(!queue.empty())
   {
     const Vertex v = queue.front(); queue.pop_front();
-    if(v != s && is_singular(v, m)) out.push_back(v);
+    if(v != s && (is_singular(v, m) || (border && is_border_target(v, m)))) out.push_back(v);
     if(dist[v] == radius) continue;
     for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
       if(dist.emplace(source(h, m), dist[v] + 1).second) queue.push_back(source(h, m));
@@ -114,7 +131,9 @@ void print(const Operation_report& r, bool json, bool first)
               << ", \"motion\": " << r.motion << ", \"path_length\": " << r.path_length
               << ", \"collapses\": " << r.collapses << ", \"splits\": " << r.splits
               << ", \"v3_before\": " << r.before.v3 << ", \"v5_before\": " << r.before.v5
+              << ", \"border_minus_before\": " << r.before.border_minus << ", \"border_plus_before\": " << r.before.border_plus
               << ", \"v3_after\": " << r.after.v3 << ", \"v5_after\": " << r.after.v5
+              << ", \"border_minus_after\": " << r.after.border_minus << ", \"border_plus_after\": " << r.after.border_plus
               << ", \"status\": \"" << r.status << "\"}";
     return;
   }
@@ -124,7 +143,11 @@ void print(const Operation_report& r, bool json, bool first)
   if(r.status == "done")
     std::cout << " (" << r.collapses << " collapses, " << r.splits << " splits)";
   std::cout << "; singularities " << r.before.v3 << " v3 + " << r.before.v5 << " v5 -> "
-            << r.after.v3 << " v3 + " << r.after.v5 << " v5\n";
+            << r.after.v3 << " v3 + " << r.after.v5 << " v5";
+  if(r.before.border_minus + r.before.border_plus + r.after.border_minus + r.after.border_plus > 0)
+    std::cout << ", border defects " << r.before.border_minus << " b- + " << r.before.border_plus << " b+ -> "
+              << r.after.border_minus << " b- + " << r.after.border_plus << " b+";
+  std::cout << "\n";
 }
 
 bool parse_index(const std::string& text, long& value)
@@ -178,8 +201,8 @@ int main(int argc, char** argv)
     if(std::size_t(source) >= num_vertices(mesh) || std::size_t(target) >= num_vertices(mesh) || source == target)
     { std::cerr << "error: --source/--target must be two distinct vertex indices below " << num_vertices(mesh) << std::endl; return EXIT_FAILURE; }
     const Vertex s(static_cast<Mesh::size_type>(source)), t(static_cast<Mesh::size_type>(target));
-    if(!is_singular(s, mesh) || !is_singular(t, mesh))
-    { std::cerr << "error: --source and --target must be interior vertices of valence 3 or 5 (after preprocessing)" << std::endl; return EXIT_FAILURE; }
+    if(!is_singular(s, mesh) || !(is_singular(t, mesh) || is_border_target(t, mesh)))
+    { std::cerr << "error: --source must be an interior vertex of valence 3 or 5, --target too or a border vertex with one quad too many (after preprocessing)" << std::endl; return EXIT_FAILURE; }
     reports.push_back(move_pair(mesh, s, t, int(motion)));
   }
   else if(random > 0)
@@ -193,7 +216,7 @@ int main(int argc, char** argv)
       for(Vertex v : vertices(mesh)) if(is_singular(v, mesh)) sing.push_back(v);
       if(sing.size() < 2) break;
       const Vertex s = sing[std::size_t(rng.get_int(0, int(sing.size())))];
-      const std::vector<Vertex> near = nearby_singularities(mesh, s, rng.get_int(1, 12));
+      const std::vector<Vertex> near = nearby_singularities(mesh, s, rng.get_int(1, 12), true);
       if(near.empty()) continue;
       const Vertex t = near[std::size_t(rng.get_int(0, int(near.size())))];
       const Operation_report r = move_pair(mesh, s, t, motion >= 0 ? int(motion) : rng.get_int(0, 4));

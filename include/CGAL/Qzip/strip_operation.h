@@ -65,6 +65,7 @@ enum class Plan_status
   ENDPOINT_ADJUSTMENT,   ///< an end-point adjustment needs a vertex on the border
   NOT_SIMPLE_AFTER_ADJUSTMENT, ///< the adjusted path is not simple
   NOTHING_TO_DO,         ///< the adjusted plan has no collapse and no split (e.g. two adjacent v3 and a split motion)
+  PATH_WOULD_COLLAPSE,   ///< a collapse of the chain would merge away a vertex the path has still to visit
   BORDER_OR_CONSTRAINED, ///< an operation would touch the border, a constrained edge or a protected face, or collapse a non-quad face
   EXECUTION_FAILED       ///< the chain could not be completed (a quad would degenerate, a link condition fails) or left a new singularity; the mesh was restored
 };
@@ -110,6 +111,7 @@ inline const char* describe(Plan_status s)
     case Plan_status::UNSUPPORTED_ENDPOINT: return "an end is not an interior valence-3 or valence-5 vertex";
     case Plan_status::ENDPOINT_ADJUSTMENT: return "the end-point adjustment needs a border vertex";
     case Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT: return "the adjusted path is not simple";
+    case Plan_status::PATH_WOULD_COLLAPSE: return "a collapse would merge away a vertex the path has still to visit";
     case Plan_status::NOTHING_TO_DO: return "the plan has no operation: this motion leaves the pair where it is";
     case Plan_status::BORDER_OR_CONSTRAINED: return "an operation would touch the border, a feature or a protected face, or collapse a non-quad face";
     case Plan_status::EXECUTION_FAILED: return "the chain of operations could not be completed";

@@ -117,16 +117,19 @@ bool is_simple_edge_path(const std::vector<typename boost::graph_traits<PolygonM
 /*!
 \ingroup PkgQzipPrimitive
 
-plans a Q-zip along `sketch`, a simple edge path from the initial singularity `sketch.front()` to
-the terminal singularity `sketch.back()`, with `initial_operation` as the compass at the initial
-singularity (one of the four motions of the pair).
+plans a Q-zip along `sketch`, a simple edge path from the initial singularity `sketch.front()` (an
+interior vertex of valence 3 or 5) to the terminal singularity `sketch.back()` (the same, or a border
+vertex with one quad too many on a straight piece of border, whose defect then moves by one border
+edge), with `initial_operation` as the compass at the initial singularity (one of the four motions of
+the pair).
 
 The compass is parallel-transported along the path (paper, Sec. 2.5): straight keeps the tag, a left
 (right) turn takes the next counterclockwise (clockwise) tag, and at an irregular vertex the turn is
 decided by the number of quads on the left of the path (after LS or RC) or on its right (after RS or LC):
 one is a turn towards that side, two is straight, three or more a turn away. The ends are then
-prepared within the one-rings of the two singularities (Sec. 2.6), folds created by the preparation are
-removed, and the plan is checked against the border, constrained edges and protected faces.
+prepared within the one-rings of the two singularities (Sec. 2.6; for a border target, see the user
+manual, "Border End Points"), folds created by the preparation are removed, and the plan is checked
+against the border, constrained edges and protected faces.
 The mesh is not modified.
 
 \tparam PolygonMesh a model of `FaceGraph`
@@ -143,6 +146,10 @@ The mesh is not modified.
   \cgalParamNBegin{face_is_constrained_map}
     \cgalParamDescription{protected faces: no path vertex may be incident to one}
     \cgalParamDefault{no face is protected}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{the positions, used for the defect of a border target (see `vertex_defect()`)}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, pm)`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 \returns the plan; `plan.status` says whether it is realizable as far as can be told without executing it
@@ -243,6 +250,18 @@ plan_qzip(const PolygonMesh& pm,
       if((is_border_edge(h, pm) && !border_ok) || get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm))))
       { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
     }
+  // a collapse whose far corner is a later path vertex, as far as the mesh before execution tells
+  // (the executor refuses it anyway; most such plans come from the S2 re-routing of a v3 start)
+  for(std::size_t j = 0; j + 1 < plan.path.size(); ++j)
+  {
+    if(!is_collapse(plan.operations[j])) continue;
+    const auto o = halfedge(plan.path[j], plan.path[j + 1], pm).first;
+    const auto h = plan.operations[j] == Strip_operation::RIGHT_COLLAPSE ? o : prev(opposite(o, pm), pm);
+    if(is_border(h, pm)) continue;
+    const vertex_descriptor far_corner = target(next(next(h, pm), pm), pm);
+    if(std::find(plan.path.begin() + std::ptrdiff_t(j + 1), plan.path.end(), far_corner) != plan.path.end())
+    { plan.status = Plan_status::PATH_WOULD_COLLAPSE; return plan; }
+  }
   plan.status = plan.number_of_collapses() + plan.number_of_splits() == 0 ? Plan_status::NOTHING_TO_DO
                                                                           : Plan_status::REALIZABLE;
   return plan;
