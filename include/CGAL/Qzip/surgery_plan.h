@@ -52,14 +52,50 @@ struct Surgery_plan
   std::vector<Strip_operation> operations;   ///< one per vertex of `path`, the last is `NO_OPERATION`
   Plan_status status = Plan_status::INVALID_PATH; ///< whether the plan is realizable, or why not
 
+  /// an atomic operation named by vertices (see `prelude`)
+  struct Atomic_operation
+  {
+    vertex_descriptor v; ///< the vertex the collapse keeps, or the vertex split
+    vertex_descriptor b; ///< the collapse removes the quad on the left of `b->v`; the split delimits its fan by `b->v`
+    vertex_descriptor d; ///< `null_vertex()` for a collapse; for a split, the other delimiter `d->v`
+  };
+  /// a vertex of `path` that the execution itself creates (see `created_vertices`)
+  struct Created_vertex
+  {
+    std::size_t index; ///< its position in `path`, where `path[index]` is `null_vertex()`
+    /// the split that makes it: the position in `path` of the vertex split by the chain (less than
+    /// `index`), or `path.size() + m` for the split `prelude[m]`
+    std::size_t split;
+    /// `true` for the vertex the split creates (the copy on the left of the path edge
+    /// `path[split] -> path[split + 1]` for a chain split), `false` for the split vertex itself
+    /// (the copy on the right, which keeps its descriptor but now takes another part)
+    bool new_vertex;
+  };
+  /// reverse plans only (see `reverse_qzip()`), empty otherwise: atomic operations performed before
+  /// the chain, in this order (they undo the clean-up of the Q-zip that the plan reverses)
+  std::vector<Atomic_operation> prelude;
+  /// reverse plans only, empty otherwise: the vertices of `path` that do not exist before the
+  /// execution (the Q-zip that the plan reverses merged them away), by increasing `index`
+  std::vector<Created_vertex> created_vertices;
+
   /// `true` when `status` is `REALIZABLE`.
   bool is_realizable() const { return status == Plan_status::REALIZABLE; }
-  /// the number of quad collapses the chain performs (before any clean-up).
+  /// the number of quad collapses the prelude and the chain perform (before any clean-up).
   std::size_t number_of_collapses() const
-  { std::size_t n = 0; for(Strip_operation op : operations) if(is_collapse(op)) ++n; return n; }
-  /// the number of vertex splits the chain performs (before any clean-up).
+  {
+    std::size_t n = 0;
+    for(const Atomic_operation& a : prelude) if(a.d == boost::graph_traits<PolygonMesh>::null_vertex()) ++n;
+    for(Strip_operation op : operations) if(is_collapse(op)) ++n;
+    return n;
+  }
+  /// the number of vertex splits the prelude and the chain perform (before any clean-up).
   std::size_t number_of_splits() const
-  { std::size_t n = 0; for(Strip_operation op : operations) if(is_split(op)) ++n; return n; }
+  {
+    std::size_t n = 0;
+    for(const Atomic_operation& a : prelude) if(a.d != boost::graph_traits<PolygonMesh>::null_vertex()) ++n;
+    for(Strip_operation op : operations) if(is_split(op)) ++n;
+    return n;
+  }
 };
 
 namespace internal {
@@ -250,8 +286,10 @@ plan_qzip(const PolygonMesh& pm,
       if((is_border_edge(h, pm) && !border_ok) || get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm))))
       { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
     }
-  // a collapse whose far corner is a later path vertex, as far as the mesh before execution tells
-  // (the executor refuses it anyway; most such plans come from the S2 re-routing of a v3 start)
+  // the far corner of each collapsed quad, as far as the mesh before execution tells (the executor
+  // refuses these collapses anyway, but only after the chain has started): it may not be a vertex the
+  // path has still to visit (most such plans come from the S2 re-routing of a v3 start), nor touch the
+  // border (a path one edge away from it), a constrained edge or a protected face
   for(std::size_t j = 0; j + 1 < plan.path.size(); ++j)
   {
     if(!is_collapse(plan.operations[j])) continue;
@@ -261,6 +299,9 @@ plan_qzip(const PolygonMesh& pm,
     const vertex_descriptor far_corner = target(next(next(h, pm), pm), pm);
     if(std::find(plan.path.begin() + std::ptrdiff_t(j + 1), plan.path.end(), far_corner) != plan.path.end())
     { plan.status = Plan_status::PATH_WOULD_COLLAPSE; return plan; }
+    for(auto hc : halfedges_around_target(halfedge(far_corner, pm), pm))
+      if(is_border_edge(hc, pm) || get(ecm, edge(hc, pm)) || get(fcm, face(hc, pm)))
+      { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
   }
   plan.status = plan.number_of_collapses() + plan.number_of_splits() == 0 ? Plan_status::NOTHING_TO_DO
                                                                           : Plan_status::REALIZABLE;
