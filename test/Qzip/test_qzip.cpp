@@ -444,6 +444,21 @@ void test_refusals_and_parameters()
     assert(Q::plan_qzip(m, regular_end, Q::Strip_operation::LEFT_SPLIT).status == Q::Plan_status::UNSUPPORTED_ENDPOINT);
   assert(Q::shortest_surgery_path(m, s, s).empty());
 
+  // a path given by its halfedges plans like the same path given by its vertices
+  {
+    std::vector<boost::graph_traits<Surface_mesh>::halfedge_descriptor> halfedges;
+    for(std::size_t i = 0; i + 1 < path.size(); ++i) halfedges.push_back(halfedge(path[i], path[i + 1], m).first);
+    for(int motion = 0; motion < 4; ++motion)
+    {
+      const auto by_vertices = Q::plan_qzip(m, path, Q::Strip_operation(motion));
+      const auto by_halfedges = Q::plan_qzip(m, halfedges, Q::Strip_operation(motion));
+      assert(by_halfedges.status == by_vertices.status && by_halfedges.path == by_vertices.path &&
+             by_halfedges.operations == by_vertices.operations);
+    }
+    std::swap(halfedges[0], halfedges[1]);
+    assert(Q::plan_qzip(m, halfedges, Q::Strip_operation::LEFT_SPLIT).status == Q::Plan_status::INVALID_PATH);
+  }
+
   // edge weights: making the edges around the shortest path's middle vertex expensive moves the path away
   {
     std::map<edge_descriptor, double> weights;

@@ -310,6 +310,35 @@ plan_qzip(const PolygonMesh& pm,
 
 /*!
 \ingroup PkgQzipPrimitive
+plans a Q-zip along a path given by its halfedges: `path[i]` goes from the `i`-th vertex of the path to
+the next one, so the initial singularity is `source(path.front(), pm)` and the terminal one
+`target(path.back(), pm)`. Same as `plan_qzip()` on the vertices of the path; a sequence of halfedges that
+do not follow each other gives a plan with status `INVALID_PATH`.
+*/
+template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+Surgery_plan<PolygonMesh>
+plan_qzip(const PolygonMesh& pm,
+          const std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>& path,
+          Strip_operation initial_operation,
+          const NamedParameters& np = parameters::default_values())
+{
+  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> vertices;
+  for(std::size_t i = 0; i < path.size(); ++i)
+  {
+    if(i > 0 && source(path[i], pm) != target(path[i - 1], pm))
+    {
+      Surgery_plan<PolygonMesh> plan;
+      plan.initial_operation = initial_operation;
+      return plan; // INVALID_PATH
+    }
+    if(i == 0) vertices.push_back(source(path[i], pm));
+    vertices.push_back(target(path[i], pm));
+  }
+  return plan_qzip(pm, vertices, initial_operation, np);
+}
+
+/*!
+\ingroup PkgQzipPrimitive
 plans the four motions of the pair joined by `sketch`: one plan per initial operation, in the order
 `LEFT_SPLIT`, `RIGHT_COLLAPSE`, `LEFT_COLLAPSE`, `RIGHT_SPLIT`. Same parameters as `plan_qzip()`.
 */
