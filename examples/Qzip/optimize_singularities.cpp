@@ -1,4 +1,7 @@
 // Reduces the singularities of a quad mesh by batches of Q-zips (Feng, Tong, Desbrun 2021, Sec. 4.1).
+// A quad-dominant input may have triangles: the optimizer pairs them (moves them towards each other and
+// collides them into quads, Sec. 3.2) and the summary says how many are left. Faces with five or more
+// sides are not supported: such an input is refused with one "error:" line.
 //
 // usage: optimize_singularities [IN [OUT]] [--batches N] [--seed S] [--feature-angle DEG]
 //                               [--protect FACES.txt] [--no-smooth] [--json REPORT]
@@ -66,7 +69,8 @@ static bool parse_unsigned(const std::string& s, unsigned long& out)
 
 static void summary(std::ostream& os, const char* title, const Q::Mesh_report& r)
 {
-  os << title << ": " << r.number_of_quads << " quads; singularities: "
+  os << title << ": " << r.number_of_quads << " quads, " << r.number_of_triangles << " triangles ("
+     << r.number_of_canonical_triangles << " canonical); singularities: "
      << r.number_of_interior_valence_3_like << " v3-like + " << r.number_of_interior_valence_5_like
      << " v5-like interior, " << r.number_of_boundary_negative_defects << " negative + "
      << r.number_of_boundary_positive_defects << " positive boundary/feature = "
@@ -202,7 +206,7 @@ int main(int argc, char** argv)
             << " vertex splits" << std::endl;
 
   Progress_visitor progress;
-  Q::Optimizer_statistics stats;
+  Q::Optimizer_result stats;
   const bool smooth = !qzip_example::has_flag(argc, argv, "--no-smooth");
   const auto common = Q::parameters::face_is_constrained_map(fprot,
                         CGAL::parameters::edge_is_constrained_map(efeat).random_seed(unsigned(seed)).visitor(std::ref(progress)));
@@ -216,6 +220,10 @@ int main(int argc, char** argv)
 
   const Q::Mesh_report after = Q::compute_mesh_report(mesh, CGAL::parameters::edge_is_constrained_map(efeat));
   summary(std::cout, "after ", after);
+  if(stats.initial_number_of_triangles > 0)
+    std::cout << "triangles: " << stats.initial_number_of_triangles << " -> " << stats.number_of_triangles << " ("
+              << stats.number_of_triangle_collisions << " collisions kept, " << stats.number_of_undone_triangle_paths
+              << " attempts undone)\n";
   std::cout << "optimizer: " << stats.batch << " batches, " << stats.number_of_surgeries << " surgeries kept, "
             << stats.number_of_undone_surgeries << " undone, " << stats.number_of_failed_surgeries
             << " rolled back by the primitive; time " << std::setprecision(3) << timer.time()
@@ -247,6 +255,8 @@ int main(int argc, char** argv)
     js << ",\n\"after\": ";
     Q::write_json(js, after);
     js << ",\n\"optimizer\": {\"batches\": " << stats.batch << ", \"surgeries\": " << stats.number_of_surgeries
+       << ", \"triangles_before\": " << stats.initial_number_of_triangles << ", \"triangles_after\": "
+       << stats.number_of_triangles << ", \"triangle_collisions\": " << stats.number_of_triangle_collisions
        << ", \"undone\": " << stats.number_of_undone_surgeries << ", \"failed\": " << stats.number_of_failed_surgeries
        << ", \"seed\": " << seed << ", \"smoothing\": " << (smooth ? "true" : "false")
        << ", \"seconds\": " << timer.time() << "}\n}\n";

@@ -5,10 +5,14 @@
 
 #include <CGAL/Qzip/triangle_moves.h>
 #include <CGAL/Qzip/qzip.h>
+#include <CGAL/Qzip/mesh_report.h>
+#include <CGAL/Qzip/optimize_singularities.h>
+#include <CGAL/Qzip/preprocess.h>
 
 #include <queue>
 #include <random>
 #include <set>
+#include <sstream>
 
 using namespace qzip_test;
 namespace Q = CGAL::Qzip;
@@ -187,8 +191,20 @@ void test_single_moves()
   const H_<Mesh> T = make_triangle_pair(m0, 8, 12, 0, Q::Triangle_move::VERTEX_TO_EDGE, 5, other);
   const auto hist0 = irregular_valences(m0);
   const long chi0 = euler_characteristic(m0);
+  {
+    // the analysis reports two canonical triangles and no singularity (their tips have valence 5)
+    assert(is_canonical(T, m0) && is_canonical(other, m0) && hist0.count(5) && hist0.at(5) == 2);
+    const Q::Mesh_report r = Q::compute_mesh_report(m0);
+    assert(r.number_of_triangles == 2 && r.number_of_canonical_triangles == 2);
+    assert(r.number_of_singularities() == 0 && r.total_absolute_defect == 0 && r.number_of_interior_valence_5_like == 0);
+    std::ostringstream js;
+    Q::write_json(js, r);
+    assert(js.str().find("\"number_of_canonical_triangles\": 2,") != std::string::npos);
+    assert(Q::vertex_defect(Q::triangle_tip(T, m0), m0) == 1); // the per-vertex defect is unchanged
+  }
   std::size_t done = 0;
-  for(int mi = 0; mi < 4; ++mi)
+  const Q::Triangle_move VE = Q::Triangle_move::VERTEX_TO_EDGE, VE2 = Q::Triangle_move::MIRRORED_VERTEX_TO_EDGE;
+  for(int mi = 0; mi < 5; ++mi)
   {
     const Q::Triangle_move mv = Q::Triangle_move(mi);
     Mesh m;
@@ -201,8 +217,8 @@ void test_single_moves()
     V_<Mesh> expected = a;
     if(mv == Q::Triangle_move::RIGHT_FLIP) expected = target(Q::internal::rotate_outgoing(tb, 1, m), m);
     if(mv == Q::Triangle_move::LEFT_FLIP) expected = target(Q::internal::rotate_outgoing(tb, 3, m), m);
-    if(mv == Q::Triangle_move::VERTEX_TO_EDGE) expected = target(Q::internal::rotate_outgoing(tb, 2, m), m);
-    assert(Q::triangle_move_toward(h, expected, m) == mv);
+    if(mv == VE || mv == VE2) expected = target(Q::internal::rotate_outgoing(tb, 2, m), m);
+    assert(Q::triangle_move_toward(h, expected, m) == (mv == VE2 ? VE : mv)); // the compass says VE; VE' is its mirror
     assert(Q::can_move_triangle(h, mv, m));
     const int dir0 = direction(h, m);
 
@@ -213,12 +229,20 @@ void test_single_moves()
     assert(euler_characteristic(m) == chi0);
     assert(non_quad_degrees(m) == non_quad_degrees(m0)); // every other face keeps its degree
     assert(faces(m).size() + (mv == Q::Triangle_move::EDGE_TO_VERTEX) ==
-           faces(m0).size() + (mv == Q::Triangle_move::VERTEX_TO_EDGE));
+           faces(m0).size() + (mv == VE || mv == VE2));
     assert(irregular_valences(m) == hist0);         // no singularity appears
     assert(is_canonical(nb, m));
     assert(Q::triangle_tip(nb, m) == expected);
     assert(direction(nb, m) == dir0);
     CGAL_USE(b);
+    if(mv == VE2)
+    {
+      // in a regular region, VE and its mirror image give isomorphic meshes
+      Mesh r;
+      auto v2r = copy_mesh_with_map(m0, r);
+      Q::move_triangle(halfedge(v2r[source(T, m0)], v2r[target(T, m0)], r).first, VE, r);
+      assert(are_isomorphic(m, r));
+    }
 
     // the inverse move, applied to the moved triangle, with the old tip as target
     {
@@ -238,7 +262,7 @@ void test_single_moves()
     check_restored(m, m0);
     ++done;
   }
-  assert(done == 4);
+  assert(done == 5);
 
   // the triangle keeps its direction under every move (flat region), and each move is refused where the
   // face it needs is a triangle or the border
@@ -248,12 +272,32 @@ void test_single_moves()
     const H_<Mesh> h = halfedge(v2v[source(T, m0)], v2v[target(T, m0)], m).first;
     const int d0 = direction(h, m);
     H_<Mesh> cur = h;
-    for(int mi : { 0, 0, 2, 3, 3, 1, 2 })
+    for(int mi : { 0, 0, 4, 2, 3, 3, 1, 4, 2 })
     {
       assert(Q::can_move_triangle(cur, Q::Triangle_move(mi), m));
       cur = Q::move_triangle(cur, Q::Triangle_move(mi), m);
       assert(is_canonical(cur, m) && direction(cur, m) == d0);
     }
+  }
+  // on a path, VE' is made where VE cannot: here the face VE would cut the new triangle from is a hexagon
+  {
+    Mesh m;
+    auto v2v = copy_mesh_with_map(m0, m);
+    const H_<Mesh> h = halfedge(v2v[source(T, m0)], v2v[target(T, m0)], m).first;
+    const V_<Mesh> t = Q::triangle_tip(h, m);
+    const V_<Mesh> w = target(Q::internal::rotate_outgoing(opposite(next(h, m), m), 2, m), m);
+    const H_<Mesh> wt = halfedge(w, t, m).first;
+    CGAL::Euler::join_face(next(next(wt, m), m), m);      // the far side of the face of w->t: a hexagon
+    assert(degree(wt, m) == 6 && !Q::can_move_triangle(h, VE, m, w) && Q::can_move_triangle(h, VE2, m, w));
+    Mesh before;
+    copy_mesh(m, before);
+    Q::Triangle_move_history<Mesh> hist(m);
+    const auto r = Q::move_triangle_along_path(m, h, { t, w }, hist);
+    assert(r.status == Q::Triangle_path_status::DONE && r.moves == std::vector<Q::Triangle_move>{ VE2 });
+    assert(CGAL::is_valid_polygon_mesh(m) && is_canonical(r.base, m) && Q::triangle_tip(r.base, m) == w);
+    assert(non_quad_degrees(m) == non_quad_degrees(before) && irregular_valences(m) == irregular_valences(before));
+    hist.undo_last();
+    check_restored(m, before);
   }
   {
     Mesh g;
@@ -261,7 +305,7 @@ void test_single_moves()
     H_<Mesh> hb = halfedge(grid_face(g, 0, 0), g);
     const H_<Mesh> d = CGAL::Euler::split_face(hb, next(next(hb, g), g), g);
     for(H_<Mesh> x : CGAL::halfedges_around_face(d, g))
-      for(int mi = 0; mi < 4; ++mi) assert(!Q::can_move_triangle(x, Q::Triangle_move(mi), g)); // border triangle
+      for(int mi = 0; mi < 5; ++mi) assert(!Q::can_move_triangle(x, Q::Triangle_move(mi), g)); // border triangle
   }
   std::cout << "  single moves and inverses: ok" << std::endl;
 }
@@ -329,7 +373,7 @@ void test_long_paths()
     ++done;
   }
   assert(done >= 40);
-  assert(kinds.size() == 4);
+  assert(kinds.count(0) && kinds.count(1) && kinds.count(2) && kinds.count(3)); // VE' only where VE cannot be made
 
   // homotopy invariance: two shortest paths to the same vertex (different tie-breaks) within a disc free of
   // other singularities give isomorphic meshes
@@ -363,7 +407,7 @@ void test_long_paths()
   }
   assert(differing >= 10);
   std::cout << "  long paths: " << done << " done (" << total_moves << " moves: VE " << kinds[0] << ", EV " << kinds[1]
-            << ", LE " << kinds[2] << ", RE " << kinds[3] << "), " << refused << " refused and rolled back; "
+            << ", LE " << kinds[2] << ", RE " << kinds[3] << ", VE' " << kinds[4] << "), " << refused << " refused and rolled back; "
             << differing << " pairs of different homotopic paths give isomorphic meshes" << std::endl;
 }
 
@@ -434,17 +478,22 @@ void test_collisions()
             if(!is_border(hh, m) && degree(hh, m) == 4 && target(next(next(hh, m), m), m) == s5[0]) diagonal = true;
           res = halfedge(s3[0], s5[0], m).second ? "adjacent 3-5" : (diagonal ? "3 and 5 across a quad" : "other");
         }
-        const char* resolution = r.collision == Q::Collision_resolution::MERGED ? "merged" : "annihilated";
+        const char* resolution = r.collision == Q::Collision_resolution::MERGED ? "merged"
+                               : (r.collision == Q::Collision_resolution::ANNIHILATED ? "annihilated" : "tip split");
+        assert(r.collision != Q::Collision_resolution::NONE);
+        // whichever way the collision is resolved (a VE into a triangle that shares the tip splits the tip),
+        // the result is the case for the relative direction
         if(rel == "opposite") assert(res == "regular");
-        if(rel == "orthogonal") assert(res == "adjacent 3-5" && r.collision == Q::Collision_resolution::MERGED);
-        if(rel == "same") assert(res == "3 and 5 across a quad" && r.collision == Q::Collision_resolution::MERGED);
+        if(rel == "orthogonal") assert(res == "adjacent 3-5" && r.collision != Q::Collision_resolution::ANNIHILATED);
+        if(rel == "same") assert(res == "3 and 5 across a quad" && r.collision != Q::Collision_resolution::ANNIHILATED);
         ++table[rel + " (" + resolution + ") -> " + res];
         hist.undo_last();
         check_restored(m, m0);
       }
     }
   }
-  assert(table.size() == 4); // opposite merged, opposite annihilated, orthogonal, same
+  // opposite merged, annihilated or tip split; orthogonal and same, merged or tip split
+  assert(table.size() == 7);
   for(const auto& kv : table) std::cout << "  collision " << kv.first << ": " << kv.second << std::endl;
 }
 
@@ -563,7 +612,7 @@ void test_real_mesh(const std::string& file, std::size_t steps)
     auto fd_before = non_quad_degrees(m);
     if(rng() % 3 != 0)
     {
-      const Q::Triangle_move mv = Q::Triangle_move(int(rng() % 4));
+      const Q::Triangle_move mv = Q::Triangle_move(int(rng() % 5));
       if(!Q::can_move_triangle(h, mv, m)) continue;
       Q::move_triangle(h, mv, hist);
       ++moves;
@@ -608,6 +657,45 @@ void test_real_mesh(const std::string& file, std::size_t steps)
             << " collisions), all undone, preparation undone" << std::endl;
 }
 
+// ------------------------------------------------------------------------------------------------
+// 6. the optimizer on hybrid meshes: its triangle pairing moves triangles towards each other and collides
+//    them into quads, then its Q-zips cancel the singularities; the pipeline of the example
+//    optimize_singularities: preprocess_valences() (which splits the poles of a UV sphere), then
+//    optimize_singularities()
+template <typename Mesh>
+void test_optimizer_on_hybrid_mesh(const std::string& file, std::size_t batches)
+{
+  Mesh m;
+  const bool ok = read_mesh(file, m);
+  assert(ok); CGAL_USE(ok);
+  const std::string name = file.substr(file.find_last_of('/') + 1);
+  const Q::Mesh_report in = Q::compute_mesh_report(m);
+  Q::preprocess_valences(m);
+  assert(CGAL::is_valid_polygon_mesh(m));
+  const Q::Mesh_report pre = Q::compute_mesh_report(m);
+  assert(pre.number_of_triangles == in.number_of_triangles);
+  const auto s = Q::optimize_singularities(m, Q::parameters::stop_predicate(Q::Batch_count_stop_predicate(batches)));
+  const Q::Mesh_report out = Q::compute_mesh_report(m);
+  assert(CGAL::is_valid_polygon_mesh(m));
+  assert(out.euler_characteristic == in.euler_characteristic);
+  assert(s.initial_number_of_triangles == in.number_of_triangles && s.number_of_triangles == out.number_of_triangles);
+  assert(out.number_of_triangles + 2 * s.number_of_triangle_collisions == in.number_of_triangles); // only collisions remove triangles
+  for(std::size_t d = 5; d < 10; ++d) assert(out.faces_by_degree.count(d) == in.faces_by_degree.count(d)); // other polygons untouched
+  assert(out.number_of_inverted_quads <= pre.number_of_inverted_quads);                       // the optimizer inverts no quad
+  // fewer triangles (a lone triangle has no partner), fewer singularities: in sum of |defect| (canonical
+  // triangles' tips not counted), and in singular vertices plus triangles (the number of singular vertices
+  // alone grows on the UV sphere, whose two poles of valence 32 carry 56 units of defect)
+  if(in.number_of_triangles >= 2) assert(out.number_of_triangles < in.number_of_triangles);
+  else assert(out.number_of_triangles == in.number_of_triangles);
+  assert(out.total_absolute_defect < in.total_absolute_defect);
+  assert(out.number_of_singularities() + out.number_of_triangles < in.number_of_singularities() + in.number_of_triangles);
+  std::cout << "  optimizer on " << name << ": triangles " << in.number_of_triangles << " -> " << out.number_of_triangles
+            << " (" << s.number_of_triangle_collisions << " collisions kept, " << s.number_of_undone_triangle_paths
+            << " undone), singular vertices " << in.number_of_singularities() << " -> " << out.number_of_singularities()
+            << ", sum |defect| " << in.total_absolute_defect << " -> " << out.total_absolute_defect
+            << ", inverted quads " << in.number_of_inverted_quads << " -> " << out.number_of_inverted_quads << std::endl;
+}
+
 template <typename Mesh>
 void run_all()
 {
@@ -626,6 +714,9 @@ void run_all()
 
   for(const char* f : { "data/noisy_sphere_triquad.obj", "data/polylap_suzanne_half.obj", "data/trimesh_target.obj" })
     test_real_mesh<Mesh>(f, 150);
+
+  for(const char* f : { "data/noisy_sphere_triquad.obj", "data/polylap_suzanne_half.obj", "data/trimesh_target.obj" })
+    test_optimizer_on_hybrid_mesh<Mesh>(f, 30);
 }
 
 } // namespace
@@ -640,10 +731,17 @@ int main()
   const std::string dir = shared_corpus_dir("hybrid corpus meshes");
   if(!dir.empty())
   {
-    std::cout << "shared corpus (Surface_mesh)" << std::endl;
-    // beast_quaddominant.obj is left out: prepare_triangles() corrupts a face cycle on it (open, see the notes)
-    for(const char* f : { "gen_instantmeshes_turbine_quaddominant.obj" })
+    // the quad-dominant meshes of the corpus (SOURCES.md), with pentagons and hexagons
+    for(const char* f : { "beast_quaddominant.obj", "gen_instantmeshes_turbine_quaddominant.obj" })
+    {
+      std::cout << "shared corpus, " << f << " (Surface_mesh)" << std::endl;
       test_real_mesh<Surface_mesh>(dir + "/" + f, 40);
+      test_optimizer_on_hybrid_mesh<Surface_mesh>(dir + "/" + f, 30);
+    }
+    // Polyhedron_3 on beast: an undone EV re-creates the vertex it removed under a new descriptor, which
+    // prepare_triangles() must not use afterwards (it used to: a dangling vertex handle)
+    std::cout << "shared corpus, beast_quaddominant.obj (Polyhedron_3)" << std::endl;
+    test_real_mesh<Polyhedron>(dir + "/beast_quaddominant.obj", 40);
   }
   return EXIT_SUCCESS;
 }

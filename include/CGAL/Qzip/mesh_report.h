@@ -12,6 +12,7 @@
 
 #include <CGAL/Qzip/quad_quality.h>
 #include <CGAL/Qzip/singularities.h>
+#include <CGAL/Qzip/triangle_moves.h>
 #include <CGAL/Qzip/internal/vertex_defect.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -38,7 +39,13 @@ namespace Qzip {
 \ingroup PkgQzipAnalysis
 
 statistics of a polygon mesh, filled by `compute_mesh_report()`: element counts, topology, valences,
-singularities (see `vertex_defect()`) and the quality of its quads (see `quad_scaled_jacobian()`).
+triangles, singularities (see `vertex_defect()`) and the quality of its quads (see `quad_scaled_jacobian()`).
+
+In a hybrid mesh, a canonical triangle (see `classify_triangle()`: isolated, interior, tip of valence 5 and
+base corners of valence 4) is counted as a triangle, not as a singularity: the `+1` its tip has in
+`vertex_defect()` is the triangle's own defect, so the singularity fields below take one unit off the
+defect of the tip of each canonical triangle. On a mesh without canonical triangles (e.g. any pure-quad
+mesh) every field is given by `vertex_defect()` alone.
 */
 struct Mesh_report
 {
@@ -69,7 +76,14 @@ struct Mesh_report
   std::map<std::size_t, std::size_t> boundary_valence_histogram; ///< valence -> number of border vertices
   /// @}
 
-  /// \name Singularities (defects as given by `vertex_defect()`)
+  /// \name Triangles (hybrid meshes)
+  /// @{
+  std::size_t number_of_triangles = 0;
+  /// triangles classified `Triangle_configuration::CANONICAL` by `classify_triangle()`; their tips are not singularities
+  std::size_t number_of_canonical_triangles = 0;
+  /// @}
+
+  /// \name Singularities (defects as given by `vertex_defect()`, less one at the tip of each canonical triangle)
   /// @{
   std::size_t number_of_interior_valence_3_like = 0; ///< interior vertices with a negative defect
   std::size_t number_of_interior_valence_5_like = 0; ///< interior vertices with a positive defect
@@ -95,6 +109,12 @@ struct Mesh_report
   std::size_t number_of_inverted_quads = 0; ///< quads with scaled Jacobian `<= 0` (degenerate ones included)
   /// @}
 
+  /// the number of singular vertices: interior v3-like and v5-like, border negative and positive defects.
+  std::size_t number_of_singularities() const
+  {
+    return number_of_interior_valence_3_like + number_of_interior_valence_5_like +
+           number_of_boundary_negative_defects + number_of_boundary_positive_defects;
+  }
   /// `true` if the mesh has no border edge.
   bool is_closed() const { return number_of_border_edges == 0; }
   /// `true` if the mesh has faces and all of them are quads.
@@ -123,6 +143,7 @@ Mesh_report compute_mesh_report(const PolygonMesh& pm,
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
 
   Mesh_report r;
+  std::vector<vertex_descriptor> canonical_tips;
   r.number_of_vertices = vertices(pm).size();
   r.number_of_edges = edges(pm).size();
   r.number_of_faces = faces(pm).size();
@@ -141,6 +162,16 @@ Mesh_report compute_mesh_report(const PolygonMesh& pm,
       ++d;
     }
     ++r.faces_by_degree[d];
+    if(d == 3)
+    {
+      ++r.number_of_triangles;
+      const Triangle_classification<PolygonMesh> c = classify_triangle(f, pm);
+      if(c.configuration == Triangle_configuration::CANONICAL)
+      {
+        ++r.number_of_canonical_triangles;
+        canonical_tips.push_back(triangle_tip(c.base, pm));
+      }
+    }
     if(d != 4)
       continue;
     const double sj = quad_scaled_jacobian(f, pm, np);
@@ -210,12 +241,18 @@ Mesh_report compute_mesh_report(const PolygonMesh& pm,
   r.genus = (2 * static_cast<long>(r.number_of_connected_components) - static_cast<long>(r.number_of_boundary_loops)
              - (r.euler_characteristic - static_cast<long>(r.number_of_isolated_vertices))) / 2;
 
-  // valences and defects
+  // valences and defects; the tip of a canonical triangle gives one unit of its defect to the triangle
+  auto tip_of = get(CGAL::dynamic_vertex_property_t<int>(), pm);
+  for(vertex_descriptor v : vertices(pm))
+    put(tip_of, v, 0);
+  for(vertex_descriptor v : canonical_tips)
+    put(tip_of, v, get(tip_of, v) + 1);
   internal::with_defect_parameters(pm, np, [&](const auto& vpm, const auto& ecm, const auto& gt)
   {
     for(vertex_descriptor v : vertices(pm))
     {
-      const internal::Vertex_defect_info info = internal::vertex_defect_info(v, pm, vpm, ecm, gt);
+      internal::Vertex_defect_info info = internal::vertex_defect_info(v, pm, vpm, ecm, gt);
+      info.defect -= get(tip_of, v);
       r.total_absolute_defect += static_cast<std::size_t>(std::abs(info.defect));
       if(info.on_border)
       {
@@ -287,6 +324,8 @@ inline std::ostream& write_json(std::ostream& os, const Mesh_report& r)
     << "  \"number_of_connected_components\": " << r.number_of_connected_components << ",\n"
     << "  \"number_of_isolated_vertices\": " << r.number_of_isolated_vertices << ",\n"
     << "  \"genus\": " << r.genus << ",\n"
+    << "  \"number_of_triangles\": " << r.number_of_triangles << ",\n"
+    << "  \"number_of_canonical_triangles\": " << r.number_of_canonical_triangles << ",\n"
     << "  \"interior_valence_histogram\": ";
   internal::write_json_histogram(s, r.interior_valence_histogram);
   s << ",\n  \"boundary_valence_histogram\": ";
@@ -337,6 +376,9 @@ inline std::ostream& write_text(std::ostream& os, const Mesh_report& r)
   internal::write_text_histogram(s, r.interior_valence_histogram);
   s << "; boundary";
   internal::write_text_histogram(s, r.boundary_valence_histogram);
+  if(r.number_of_triangles > 0)
+    s << "\ntriangles:     " << r.number_of_triangles << " (" << r.number_of_canonical_triangles
+      << " canonical: their tips are not counted as singularities)";
   s << "\nsingularities: interior " << r.number_of_interior_valence_3_like << " v3-like, "
     << r.number_of_interior_valence_5_like << " v5-like; boundary "
     << r.number_of_boundary_negative_defects << " negative, " << r.number_of_boundary_positive_defects

@@ -16,6 +16,7 @@
 #include <CGAL/Qzip/smoothing.h>
 #include <CGAL/Qzip/Scoring/Default_scoring.h>
 #include <CGAL/Qzip/internal/optimizer/Batch_optimizer.h>
+#include <CGAL/Qzip/internal/optimizer/Triangle_pairing.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -28,9 +29,32 @@ namespace Qzip {
 
 /*!
 \ingroup PkgQzipOptimizer
+What `optimize_singularities()` returns: the statistics of its batches of Q-zips (the final state of
+`Optimizer_statistics`) and what its triangle pairing did on a hybrid triangle-quad mesh.
+*/
+struct Optimizer_result : Optimizer_statistics
+{
+  std::size_t initial_number_of_triangles = 0; ///< triangles of the input
+  std::size_t number_of_triangles = 0;         ///< triangles left at the end
+  std::size_t number_of_triangle_collisions = 0; ///< collisions kept by the pairing (each turns two triangles into quads)
+  std::size_t number_of_undone_triangle_paths = 0; ///< triangle paths and collisions tried and undone
+};
+
+/*!
+\ingroup PkgQzipOptimizer
 
 reduces the number of singularities of a quad mesh by batches of Q-zips (paper, Sec. 4.1), while keeping
 its quads valid, its size roughly constant, its features and protected regions intact.
+
+In a hybrid mesh of quads and triangles, the triangles are paired first (paper, Sec. 3.2): each triangle is
+moved along the shortest edge paths from its tip towards the corners of the closest other triangles
+(`move_triangle_along_path()`, at most 12 edges, through interior vertices whose one-ring has no border,
+constrained edge nor protected face) and adjacent triangles are collided directly (`collide_triangles()`).
+A path or collision is kept only when it turns triangles into quads, lowers `2 #triangles + sum |defect|`
+(the tip of a canonical triangle counted as regular, see `Mesh_report`) and inverts no quad; otherwise it
+is undone exactly. The batches of Q-zips then never touch a triangle (their edges count as border edges,
+see `Non_quad_face_map`). Faces of degree 5 or more are not supported by the pairing (they are left as they
+are, and the Q-zips avoid them like triangles).
 
 Each batch picks at random half of the singularities that can start a Q-zip (interior vertices of valence 3
 or 5 not on a feature nor a protected face). For each, the three closest v3-like and the three closest
@@ -109,12 +133,12 @@ Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valen
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
-\returns the statistics of the run (see `Optimizer_statistics`)
+\returns the statistics of the run (see `Optimizer_result`)
 \pre `pm` is a valid polygon mesh
 \sa `execute_qzip()`, `smooth_quad_mesh()`, `preprocess_valences()`
 */
 template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
-Optimizer_statistics optimize_singularities(PolygonMesh& pm, const NamedParameters& np = parameters::default_values())
+Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& np = parameters::default_values())
 {
   typedef boost::graph_traits<PolygonMesh> GT;
   typedef typename GT::edge_descriptor edge_descriptor;
@@ -153,9 +177,22 @@ Optimizer_statistics optimize_singularities(PolygonMesh& pm, const NamedParamete
   settings.face_count_tolerance = choose_parameter(get_parameter(np, Qzip::internal_np::face_count_tolerance), 0.1);
   settings.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
 
+  typedef internal::Triangle_pairing<PolygonMesh, VPM, ECM, FCM, Geom_traits> Pairing;
+  Optimizer_result result;
+  result.initial_number_of_triangles = Pairing::number_of_triangles(pm);
+  if(result.initial_number_of_triangles > 1)
+  {
+    const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+    const internal::Triangle_pairing_statistics ps = Pairing(pm, vpm, ecm, fcm, gt).run();
+    result.number_of_triangle_collisions = ps.collisions;
+    result.number_of_undone_triangle_paths = ps.undone;
+  }
+
   internal::Batch_optimizer<PolygonMesh, VPM, ECM, FCM, Geom_traits, Scoring, Stop, Visitor_type>
     optimizer(pm, vpm, ecm, fcm, scoring, stop, visitor, settings);
-  return optimizer.run();
+  static_cast<Optimizer_statistics&>(result) = optimizer.run();
+  result.number_of_triangles = Pairing::number_of_triangles(pm);
+  return result;
 }
 
 } // namespace Qzip

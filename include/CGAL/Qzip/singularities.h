@@ -109,6 +109,8 @@ degree corner, through the clamp. Read as a number of quads it is right at every
 `max(1, .)`, and this is the reading used here.
 
 Triangles and other polygons are faces like quads: a vertex of a hybrid mesh is measured with the same rule.
+So the tip of a canonical triangle (valence 5, see `classify_triangle()`) has defect `+1` here;
+`compute_mesh_report()` counts that unit as the triangle's own, not as a singularity.
 A negative defect means that `v` behaves as a valence-3 vertex (`Singularity_type::VALENCE_3_LIKE`),
 a positive one as a valence-5 vertex. An isolated vertex has defect 0.
 

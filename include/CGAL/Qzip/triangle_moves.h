@@ -46,24 +46,26 @@ enum class Triangle_move
   VERTEX_TO_EDGE = 0, ///< VE: the tip is split into an edge, the new base; the triangle moves one edge towards its tip
   EDGE_TO_VERTEX = 1, ///< EV: the base is collapsed into a vertex, the new tip; the triangle moves one edge towards its base
   LEFT_FLIP = 2,      ///< LE: the edge `t-a` is flipped in the pentagon made of the triangle and its left quad; the triangle moves one edge to the left
-  RIGHT_FLIP = 3      ///< RE: the edge `t-b` is flipped in the pentagon made of the triangle and its right quad; the triangle moves one edge to the right
+  RIGHT_FLIP = 3,     ///< RE: the edge `t-b` is flipped in the pentagon made of the triangle and its right quad; the triangle moves one edge to the right
+  MIRRORED_VERTEX_TO_EDGE = 4 ///< VE': VE that cuts the new triangle from the face on the left of `w->t` instead of the one on its right (the mirror image of VE)
 };
 
 /// \ingroup PkgQzipHybrid
-/// the short name of a triangle move: "VE", "EV", "LE" or "RE".
+/// the short name of a triangle move: "VE", "EV", "LE", "RE" or "VE'".
 inline const char* short_name(Triangle_move m)
 {
-  static const char* names[] = { "VE", "EV", "LE", "RE" };
+  static const char* names[] = { "VE", "EV", "LE", "RE", "VE'" };
   return names[int(m)];
 }
 
 /// \ingroup PkgQzipHybrid
 /// the move that undoes `m`, applied to the triangle `m` produced: VE and EV undo each other, and so do
-/// LE and RE (see `move_triangle()` for the vertex to pass so that the inverse is exact).
+/// LE and RE; EV also undoes VE' (see `move_triangle()` for the vertex to pass so that the inverse is exact).
 inline Triangle_move inverse(Triangle_move m)
 {
   static const Triangle_move inv[] = { Triangle_move::EDGE_TO_VERTEX, Triangle_move::VERTEX_TO_EDGE,
-                                       Triangle_move::RIGHT_FLIP, Triangle_move::LEFT_FLIP };
+                                       Triangle_move::RIGHT_FLIP, Triangle_move::LEFT_FLIP,
+                                       Triangle_move::EDGE_TO_VERTEX };
   return inv[int(m)];
 }
 
@@ -278,13 +280,15 @@ bool can_move_triangle(typename boost::graph_traits<PolygonMesh>::halfedge_descr
       return true;
     }
     case Triangle_move::VERTEX_TO_EDGE:
+    case Triangle_move::MIRRORED_VERTEX_TO_EDGE:
     {
       if(internal::is_border_vertex(t, pm)) return false;
       const vertex_descriptor w = (toward == GT::null_vertex()) ? internal::default_ve_target(h, pm) : toward;
       if(w == a || w == b) return false;
       const auto wt = halfedge(w, t, pm);
       if(!wt.second) return false;
-      const halfedge_descriptor q = wt.first;         // w->t, its face becomes the new triangle and a quad
+      // w->t (VE) or t->w (VE'): its face becomes the new triangle and a quad
+      const halfedge_descriptor q = (m == Triangle_move::VERTEX_TO_EDGE) ? wt.first : opposite(wt.first, pm);
       if(!internal::is_quad_face(q, pm) || !internal::has_distinct_corners(q, pm)) return false;
       for(auto x : halfedges_around_face(q, pm)) if(target(x, pm) == a || target(x, pm) == b) return false;
       return true;
@@ -406,6 +410,24 @@ apply_triangle_move(typename boost::graph_traits<PolygonMesh>::halfedge_descript
       J.move_point(t, p1);
       return t_t2;
     }
+    case Triangle_move::MIRRORED_VERTEX_TO_EDGE:
+    {
+      // the mirror image of VE: the split gives the new edge to T and to the face L on the left of w->t
+      // (split_vertex(b->t, x->t) with x->t in L): L = (.., x, t2, t, w, ..) is split between t2 and w into
+      // the new triangle (t2, t, w) and a face of the degree L had.
+      const vertex_descriptor w = (toward == GT::null_vertex()) ? default_ve_target(h, pm) : toward;
+      const halfedge_descriptor xt = prev(opposite(halfedge(w, t, pm).first, pm), pm);
+      J.split_vertex(n, xt);
+      const halfedge_descriptor t2_t = next(xt, pm), t_w = next(t2_t, pm);
+      CGAL_assertion(target(t_w, pm) == w);
+      J.split_face(t_w, xt);                                       // w->t2 closes (t2, t, w)
+      const vertex_descriptor t2 = source(t2_t, pm);
+      const auto p2 = relaxed_position(t2, pm, vpm);
+      const auto p1 = relaxed_position(t, pm, vpm);
+      J.move_point(t2, p2);
+      J.move_point(t, p1);
+      return t2_t;
+    }
   }
   return h;
 }
@@ -429,6 +451,10 @@ moves the triangle whose base halfedge is `h` by one edge (paper, Fig. 14). With
   Made of `split_vertex()` and `split_face()`. Valences: `deg(w) += 1`, and with `k` the number of
   counterclockwise steps from `t->b` to `t->w`: `deg(t2) = k + 2`, `deg(t) = deg_before(t) - k + 1`.
   EV of the new triangle towards `t` is the exact inverse.
+- `MIRRORED_VERTEX_TO_EDGE` (VE') does the same with the face on the left of `w->t`: the new triangle is
+  `(t2, t, w)`, with `t2` on the other side of `t`. In a regular region VE and VE' give isomorphic meshes;
+  VE' is the way forward when the face on the right of `w->t` cannot be used (see `move_triangle_along_path()`).
+  EV of the new triangle towards `t` is its inverse too.
 - `LEFT_FLIP` (LE) and `RIGHT_FLIP` (RE) flip the side `t-a` (resp. `t-b`) inside the pentagon made of
   `T` and the quad across that side: the new triangle is `(tl, al, a)` (resp. `(tr, b, br)`) and `T` becomes
   a quad. Made of `join_face()` and `split_face()`. Valences: `deg(t) -= 1`, `deg(tl) += 1` (resp. `tr`).
@@ -604,7 +630,8 @@ enum class Collision_resolution
 {
   NONE,       ///< nothing could be done
   MERGED,     ///< `merge_triangles()`: the two triangles became one quad
-  ANNIHILATED ///< `annihilate_triangles()`: the shared edge was collapsed and both triangles vanished
+  ANNIHILATED, ///< `annihilate_triangles()`: the shared edge was collapsed and both triangles vanished
+  TIP_SPLIT   ///< a VE (or VE') ran into a triangle that shares the tip (see `move_triangle_along_path()`): the tip was split into an edge, both triangles became quads
 };
 
 /*!
@@ -640,6 +667,46 @@ Collision_resolution collide_triangles(typename boost::graph_traits<PolygonMesh>
   merge_triangles(h, history);
   return Collision_resolution::MERGED;
 }
+
+namespace internal {
+
+// A VE of the triangle of base `h` towards `w` whose new triangle would be cut from the face `F` of `w->t`
+// (t the tip; for VE', the face of `t->w`), when `F` is itself a triangle: the two triangles collide at the
+// tip. Splitting the tip as VE (VE') does gives each of them the new edge t-t2: both become quads.
+template <typename PolygonMesh>
+bool can_split_shared_tip(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
+                          typename boost::graph_traits<PolygonMesh>::vertex_descriptor w, bool mirrored,
+                          const PolygonMesh& pm)
+{
+  const auto n = next(h, pm);
+  const auto a = source(h, pm), b = target(h, pm), t = target(n, pm);
+  if(w == a || w == b || is_border_vertex(t, pm)) return false;
+  const auto wt = halfedge(w, t, pm);
+  if(!wt.second) return false;
+  const auto q = mirrored ? opposite(wt.first, pm) : wt.first;
+  if(!is_triangle_face(q, pm) || face(q, pm) == face(h, pm)) return false;
+  const auto x = target(next(q, pm), pm);                  // the third corner of F
+  return x != w && x != t && x != a && x != b;
+}
+
+template <typename PolygonMesh, typename VPM>
+void split_shared_tip(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
+                      typename boost::graph_traits<PolygonMesh>::vertex_descriptor w, bool mirrored,
+                      Triangle_journal<PolygonMesh, VPM>& J)
+{
+  PolygonMesh& pm = J.mesh();
+  const auto n = next(h, pm);
+  const auto t = target(n, pm);
+  const auto wt = halfedge(w, t, pm).first;
+  const auto hn = mirrored ? J.split_vertex(n, prev(opposite(wt, pm), pm)) : J.split_vertex(wt, n); // t2->t
+  const auto t2 = source(hn, pm);
+  const auto p2 = relaxed_position(t2, pm, J.vertex_point_map());
+  const auto p1 = relaxed_position(t, pm, J.vertex_point_map());
+  J.move_point(t2, p2);
+  J.move_point(t, p1);
+}
+
+} // namespace internal
 
 /// \ingroup PkgQzipHybrid
 /// Result status of `move_triangle_along_path()`.
@@ -700,8 +767,11 @@ the base; after EV, LE or RE, it points into the face corner the base was made f
 
 When the move to make needs a face that is a triangle (the two triangles collide), the collision is
 resolved by `collide_triangles()` across the edge the move would have flipped or collapsed, and the path
-ends there (status `COLLIDED`). If a move cannot be made, everything done is rolled back (status
-`BLOCKED`). The whole path is recorded in `history` as one group.
+ends there (status `COLLIDED`). Where the compass says VE and VE cannot be made, VE' (its mirror image)
+is made instead. A VE (VE') whose new triangle would be cut from a triangle `F` (the face of `w->t`, resp.
+`t->w`, which shares the tip `t`) collides too: the tip is split into an edge as VE (VE') does, which
+turns both triangles into quads, and no face is cut (`Collision_resolution::TIP_SPLIT`). If a move cannot
+be made, everything done is rolled back (status `BLOCKED`). The whole path is recorded in `history` as one group.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`
 \param pm the polygon mesh
@@ -742,7 +812,29 @@ move_triangle_along_path(PolygonMesh& pm, typename boost::graph_traits<PolygonMe
   {
     const vertex_descriptor t = triangle_tip(base, pm), w = path[j + 1];
     if(t != path[j] || !halfedge(t, w, pm).second) return fail(Triangle_path_status::INVALID_PATH);
-    const Triangle_move m = triangle_move_toward(base, w, pm);
+    Triangle_move m = triangle_move_toward(base, w, pm);
+    if(m == Triangle_move::VERTEX_TO_EDGE)
+    {
+      // VE cuts the new triangle from the face on the right of w->t, VE' (when VE cannot) from the one on its
+      // left; a triangle there shares the tip: collision
+      bool found = false;
+      for(int side = 0; side < 2 && !found; ++side)
+      {
+        const bool mirrored = (side == 1);
+        const halfedge_descriptor wt = halfedge(w, t, pm).first;
+        if(internal::is_triangle_face(mirrored ? opposite(wt, pm) : wt, pm))
+        {
+          if(!internal::can_split_shared_tip(base, w, mirrored, pm)) continue;
+          internal::split_shared_tip(base, w, mirrored, J);
+          r.collision = Collision_resolution::TIP_SPLIT;
+          r.status = Triangle_path_status::COLLIDED;
+          return r;
+        }
+        const Triangle_move mm = mirrored ? Triangle_move::MIRRORED_VERTEX_TO_EDGE : Triangle_move::VERTEX_TO_EDGE;
+        if(can_move_triangle(base, mm, pm, w)) { m = mm; found = true; }
+      }
+      if(!found) return fail(Triangle_path_status::BLOCKED);
+    }
     // the face the move needs; a triangle there is a collision
     halfedge_descriptor partner = GT::null_halfedge();
     switch(m)
@@ -750,7 +842,8 @@ move_triangle_along_path(PolygonMesh& pm, typename boost::graph_traits<PolygonMe
       case Triangle_move::EDGE_TO_VERTEX: partner = base; break;
       case Triangle_move::LEFT_FLIP: partner = prev(base, pm); break;
       case Triangle_move::RIGHT_FLIP: partner = next(base, pm); break;
-      case Triangle_move::VERTEX_TO_EDGE: break;
+      case Triangle_move::VERTEX_TO_EDGE:
+      case Triangle_move::MIRRORED_VERTEX_TO_EDGE: break; // handled above
     }
     if(partner != GT::null_halfedge() && internal::is_triangle_face(opposite(partner, pm), pm))
     {
@@ -904,7 +997,9 @@ Triangle_preparation_result prepare_triangles(PolygonMesh& pm, Triangle_move_his
     const auto c = classify_triangle(f, pm);
     if(c.configuration != Triangle_configuration::SINGULAR_CORNERS) continue;
     bool done = false;
-    // the corners, by vertex: an undone move may re-create the halfedges of the triangle under new descriptors
+    // the corners, by vertex, in the order of the face: an undone move may re-create the halfedges of the
+    // triangle under new descriptors, and an undone EV of base c[i] -> c[i+1] re-creates the vertex c[i+1]
+    // it removed, under a new descriptor (with Polyhedron_3 the old one dangles)
     std::vector<typename GT::vertex_descriptor> corners;
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pm), pm)) corners.push_back(target(h, pm));
     for(std::size_t i = 0; i < 3 && !done; ++i)
@@ -912,14 +1007,17 @@ Triangle_preparation_result prepare_triangles(PolygonMesh& pm, Triangle_move_his
       for(int mi = 0; mi < 4 && !done; ++mi)
       {
         const Triangle_move m = Triangle_move(mi);
-        const auto hh = halfedge(corners[i], corners[(i + 1) % 3], pm);
-        if(!hh.second) continue;
-        const halfedge_descriptor h = hh.first;
+        const halfedge_descriptor h = halfedge(corners[i], corners[(i + 1) % 3], pm).first;
+        CGAL_assertion(internal::is_triangle_face(h, pm));
         if(!can_move_triangle(h, m, pm)) continue;
         const halfedge_descriptor nb = move_triangle(h, m, history);
         const auto c2 = classify_triangle(face(nb, pm), pm);
-        if(c2.configuration == Triangle_configuration::CANONICAL) { done = true; ++r.separated; }
-        else history.undo_last();
+        if(c2.configuration == Triangle_configuration::CANONICAL) { done = true; ++r.separated; continue; }
+        history.undo_last();
+        // c[i+2] -> c[i] is a side of the restored triangle; its next one ends at the (re-created) c[i+1]
+        const auto side = halfedge(corners[(i + 2) % 3], corners[i], pm);
+        CGAL_assertion(side.second && internal::is_triangle_face(side.first, pm));
+        corners[(i + 1) % 3] = target(next(side.first, pm), pm);
       }
     }
   }
