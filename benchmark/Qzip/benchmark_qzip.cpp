@@ -1,5 +1,7 @@
 // Times the Q-zip primitive on real meshes: path search, planning, execution and undo, by path length,
-// with a plain breadth-first search between the same two vertices as the floor.
+// with a plain breadth-first search between the same two vertices as the floor. Each Q-zip is executed
+// twice (in alternating order, undone in between): by `execute_qzip()`, which records the reverse Q-zip,
+// and by the bare executor (internal::Chain_executor), to measure what the recording costs.
 //
 // usage: benchmark_qzip [N per mesh = 2000] [mesh files...]   (default: bundled meshes + shared corpus)
 
@@ -22,7 +24,7 @@ typedef std::chrono::steady_clock Clock;
 static double micro(Clock::time_point a, Clock::time_point b)
 { return std::chrono::duration<double, std::micro>(b - a).count(); }
 
-struct Sample { std::size_t length; double path, plan, exec, undo, bfs; };
+struct Sample { std::size_t length; double path, plan, exec, exec_bare, undo, bfs; };
 
 // the floor: a plain BFS from s until t, with a visited stamp array (no allocation per search)
 struct Plain_bfs
@@ -79,7 +81,9 @@ void run(const std::string& file, std::size_t count, std::vector<Sample>& all)
   Plain_bfs bfs;
   Q::Qzip_history<Surface_mesh> history(m);
   std::vector<Sample> samples;
-  std::size_t refused = 0, attempts = 0;
+  std::size_t refused = 0, attempts = 0, unpaired = 0;
+  typedef Q::internal::Chain_executor<Surface_mesh, boost::property_map<Surface_mesh, CGAL::vertex_point_t>::type,
+                                      CGAL::parameters::Default_named_parameters> Bare_executor;
   while(samples.size() < count && attempts < 20 * count)
   {
     ++attempts;
@@ -101,21 +105,43 @@ void run(const std::string& file, std::size_t count, std::vector<Sample>& all)
     const auto plan = Q::plan_qzip(m, path, Q::Strip_operation(rng.get_int(0, 4)));
     auto t2 = Clock::now();
     if(!plan.is_realizable()) { ++refused; continue; }
+    // the bare executor, before or after the recording one (alternately): the undo gives back the same
+    // descriptors on Surface_mesh (its free lists are last in, first out), checked by the counts
+    auto bare = [&]()
+    {
+      const auto b0 = Clock::now();
+      Bare_executor exec(m, history.operation_log(), CGAL::parameters::default_values());
+      const auto rb = exec.run(plan);
+      const auto b1 = Clock::now();
+      if(rb.is_done()) history.undo_last();
+      return std::make_pair(rb, micro(b0, b1));
+    };
+    const bool bare_first = samples.size() % 2 == 1;
+    std::pair<Q::Qzip_result<Surface_mesh>, double> rb;
+    if(bare_first) rb = bare();
+    const auto e0 = Clock::now();
     const auto r = Q::execute_qzip(m, plan, history);
-    auto t3 = Clock::now();
+    const auto e1 = Clock::now();
     if(!r.is_done()) { ++refused; continue; }
     history.undo_last();
-    auto t4 = Clock::now();
+    const auto e2 = Clock::now();
+    if(!bare_first) rb = bare();
+    x.exec_bare = rb.second;
+    if(!rb.first.is_done() || rb.first.number_of_collapses != r.number_of_collapses ||
+       rb.first.number_of_splits != r.number_of_splits)
+    { ++unpaired; x.exec_bare = -1; }
+    const auto f0 = Clock::now();
     bfs.run(m, s, t);
-    auto t5 = Clock::now();
+    const auto f1 = Clock::now();
     x.length = path.size() - 1;
-    x.path = micro(t0, t1); x.plan = micro(t1, t2); x.exec = micro(t2, t3); x.undo = micro(t3, t4); x.bfs = micro(t4, t5);
+    x.path = micro(t0, t1); x.plan = micro(t1, t2); x.exec = micro(e0, e1); x.undo = micro(e1, e2); x.bfs = micro(f0, f1);
     samples.push_back(x);
   }
   std::vector<double> exec, path;
   for(const Sample& x : samples) { exec.push_back(x.exec); path.push_back(x.path); }
   std::printf("| %s | %zu | %zu | %zu | %.1f | %.1f |\n", file.substr(file.find_last_of('/') + 1).c_str(),
               std::size_t(faces(m).size()), samples.size(), refused, median(exec), median(path));
+  if(unpaired != 0) std::fprintf(stderr, "%s: %zu Q-zips whose bare execution differed (not compared)\n", file.c_str(), unpaired);
   all.insert(all.end(), samples.begin(), samples.end());
 }
 
@@ -142,13 +168,16 @@ int main(int argc, char** argv)
 
   std::printf("\n| path length | Q-zips | execute median (us) | execute p90 (us) | plan median (us) | path search median (us) | path + plan + execute median (us) | undo median (us) | plain BFS s->t median (us) | execute / BFS | path search / BFS |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<std::string> recorder_rows;
   const std::size_t buckets[][2] = { {1, 2}, {3, 5}, {6, 8}, {9, 16}, {17, 32}, {33, 1000} };
   for(const auto& b : buckets)
   {
-    std::vector<double> exec, plan, path, total, undo, bfs, r1, r2;
+    std::vector<double> exec, plan, path, total, undo, bfs, r1, r2, paired, bare, ratio;
     for(const Sample& x : all)
       if(x.length >= b[0] && x.length <= b[1])
       {
+        if(x.exec_bare > 0)
+        { paired.push_back(x.exec); bare.push_back(x.exec_bare); ratio.push_back(x.exec / x.exec_bare); }
         exec.push_back(x.exec); plan.push_back(x.plan); path.push_back(x.path); undo.push_back(x.undo);
         total.push_back(x.path + x.plan + x.exec); bfs.push_back(x.bfs);
         r1.push_back(x.exec / std::max(x.bfs, 1e-3)); r2.push_back(x.path / std::max(x.bfs, 1e-3));
@@ -157,6 +186,13 @@ int main(int argc, char** argv)
     std::printf("| %zu-%zu | %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f |\n", b[0], b[1], exec.size(),
                 median(exec), percentile(exec, 0.9), median(plan), median(path), median(total), median(undo), median(bfs),
                 median(r1), median(r2));
+    char row[256];
+    std::snprintf(row, sizeof(row), "| %zu-%zu | %zu | %.1f | %.1f | %.2f |\n", b[0], b[1], paired.size(),
+                  median(paired), median(bare), median(ratio));
+    recorder_rows.push_back(row);
   }
+  std::printf("\n| path length | Q-zips compared | execute_qzip() median (us) | bare executor median (us) | median ratio |\n");
+  std::printf("|---|---|---|---|---|\n");
+  for(const std::string& row : recorder_rows) std::printf("%s", row.c_str());
   return EXIT_SUCCESS;
 }

@@ -23,8 +23,6 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
-#include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -39,8 +37,14 @@ enum class Reverse_qzip_status
   AVAILABLE,               ///< `Qzip_result::reverse_plan` undoes the Q-zip
   NOT_DONE,                ///< the Q-zip was not carried out: there is nothing to undo
   SINGULARITIES_CANCELLED, ///< the Q-zip cancelled singularities, and a Q-zip never creates any
-  CLEANED_UP,              ///< the chain left a valence-2 or valence-6 vertex that the clean-up removed or split
-  PATH_VERTEX_MERGED,      ///< a collapse of the chain merged away a vertex of the path it had already visited
+  /// the clean-up (valence-2 removal, valence-6 split) cannot be undone before the reverse chain: one of
+  /// its operations involves a vertex that a later one removed; or, for the reverse of a reverse plan,
+  /// the valence-6 vertex its prelude re-created has several admissible splits, and the executor's
+  /// clean-up might not choose the one undone
+  CLEANED_UP,
+  /// the Q-zip moved a defect along the border (a border target): the reverse would have to collapse
+  /// a quad between two border vertices, which `quad_collapse()` may not do
+  BORDER_DEFECT_MOVED,
   GUIDE_NOT_RESTORABLE     ///< two consecutive collapses of the chain share no corner the reverse split can be guided by
 };
 
@@ -75,7 +79,8 @@ struct Qzip_result
   Reverse_qzip_status reverse_status = Reverse_qzip_status::NOT_DONE;
   /// the reverse Q-zip (see `reverse_qzip()`): a plan on the mesh after this Q-zip whose execution gives
   /// back the mesh before it, up to isomorphism; meaningful when `reverse_status` is `AVAILABLE`.
-  /// Its `source` and `target` are the ends of its path, which need not be singular.
+  /// Its `source` and `target` are the ends of its path, which need not be singular (`null_vertex()` when
+  /// the reverse itself re-creates them, see `Surgery_plan::created_vertices`).
   Surgery_plan<PolygonMesh> reverse_plan;
 
   /// `true` when the Q-zip was carried out.
@@ -133,118 +138,219 @@ namespace internal {
 //   NOOP: nothing to undo.
 // The reverse chain thus walks the path backwards; when it starts with a split, it starts one vertex
 // earlier, at the corner kept by the last collapse, with a no-operation that provides the guide.
-// Every vertex of the path must still exist (no collapse may have merged one away), the clean-up must not
-// have run (its collapse or split is not a chain step), and no singularity may have been cancelled (a
-// Q-zip never creates one). The recorder watches the chain as a visitor and forwards every call to the
-// user's visitor.
+// A path vertex that a collapse of step j merged away (z, or in a reverse plan a second name of w) is
+// re-created by the reverse split at w: the reverse plan names it as one of the two copies of that split
+// (Surgery_plan::created_vertices): z took the side of the collapsed quad, on the left of w->v after LC,
+// on its right after RC (the split vertex itself). The clean-up (a valence-2 vertex merged into its far
+// corner, a valence-6 vertex split) is undone first, by the inverse atomic operations in reverse order
+// (Surgery_plan::prelude), named by vertices of the mesh after the Q-zip; a path vertex the clean-up merged
+// away is the vertex created by the inverse split. Refused: Q-zips that cancelled singularities (a Q-zip
+// never creates one), Q-zips that moved a border defect (the inverse of the last split would collapse a
+// quad between two border vertices), clean-ups whose operations involve a vertex a later clean-up removed,
+// and redos whose clean-up would have a choice (check_valence_6()).
+// The recorder watches the execution as a visitor and forwards every call to the user's visitor; it
+// costs a few vectors of the path's length, and a search of the path per collapse.
 template <typename PolygonMesh, typename UserVisitor>
 class Reverse_recorder
 {
   typedef boost::graph_traits<PolygonMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef boost::hash<vertex_descriptor> Vertex_hash;
+  typedef Surgery_plan<PolygonMesh> Plan;
+  typedef typename Plan::Atomic_operation Atomic_operation;
+  typedef typename Plan::Created_vertex Created_vertex;
+  static constexpr std::size_t npos = std::size_t(-1);
 
-  const Surgery_plan<PolygonMesh>& plan;
+  // a path vertex merged away by the chain: re-created by the reverse split at path[step + 1]
+  struct Merge { std::size_t step = npos; bool new_vertex = false; };
+  // a clean-up operation: its inverse, and the vertex it removed (collapse) or null_vertex() (split)
+  struct Cleanup { Atomic_operation inverse; vertex_descriptor removed; };
+
+  const PolygonMesh& pm;
+  const Plan& plan;
   UserVisitor user;
-  std::vector<std::size_t> collapse_steps;  // indices in plan.path of the chain's collapses
-  std::vector<Strip_operation> reverse_ops; // the reverse tag of each step, indexed like plan.path
-  std::size_t collapses_seen = 0;
+  std::size_t next_step = 0;                 // the position in plan.path of the chain's next operation
+  std::vector<vertex_descriptor> created_names; // plan.path with the vertices the execution created (if any)
+  const std::vector<vertex_descriptor>& names;  // plan.path, or created_names
+  std::vector<Strip_operation> reverse_ops;  // the reverse tag of each step, indexed like plan.path
+  std::vector<Merge> merged;                 // indexed like plan.path (empty until a path vertex is merged)
+  std::vector<Cleanup> cleanups;
+  std::size_t operations_seen = 0;
   vertex_descriptor kept_corner = GT::null_vertex(); // x of the last chain collapse
   Reverse_qzip_status refusal = Reverse_qzip_status::AVAILABLE;
-  // valence of every pre-existing interior vertex before its first operation, -1 for border vertices
-  std::unordered_map<vertex_descriptor, int, Vertex_hash> first_valence;
-  std::unordered_set<vertex_descriptor, Vertex_hash> created;
+  // the last split (its returned halfedge is known after it) and the position that names its copies
   halfedge_descriptor last_split = GT::null_halfedge();
+  vertex_descriptor last_split_vertex = GT::null_vertex();
+  std::size_t last_split_position = npos;
+  vertex_descriptor valence_6 = GT::null_vertex(); // made by the last prelude collapse, checked after it
 
-  // the vertex created by the previous split, known once it is done: the split returned h2 = d->v on
-  // the new quad (v, b, c, d)
-  void settle(const PolygonMesh& pm)
+  // names the copies of the previous split, once it is done: it returned h2 = d->v on the new quad
+  // (v, b, c, d), c the new vertex
+  void settle()
   {
     if(last_split == GT::null_halfedge()) return;
-    created.insert(target(next(next(last_split, pm), pm), pm));
+    const vertex_descriptor made = target(next(next(last_split, pm), pm), pm);
+    for(const Created_vertex& cv : plan.created_vertices)
+      if(cv.split == last_split_position) created_names[cv.index] = cv.new_vertex ? made : last_split_vertex;
     last_split = GT::null_halfedge();
   }
 
-  void see(vertex_descriptor v, const PolygonMesh& pm)
+  // The redo (the reverse of a reverse plan whose prelude re-created a valence-6 vertex) relies on the
+  // executor's clean-up splitting it again as before; refused when the clean-up has a choice: more than
+  // one pair of opposite neighbours that are interior and regular (Chain_executor::split_valence_6).
+  void check_valence_6()
   {
-    if(created.count(v) == 0 && first_valence.count(v) == 0)
-      first_valence.emplace(v, is_border_vertex(v, pm) ? -1 : int(valence(v, pm)));
+    if(valence_6 == GT::null_vertex()) return;
+    std::vector<vertex_descriptor> ring;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(valence_6, pm), pm)) ring.push_back(source(h, pm));
+    valence_6 = GT::null_vertex();
+    if(ring.size() != 6) return;
+    int choices = 0;
+    for(std::size_t i = 0; i < 3; ++i)
+    {
+      const vertex_descriptor b = ring[i], d = ring[i + 3];
+      if(valence(b, pm) == 4 && valence(d, pm) == 4 && !is_border_vertex(b, pm) && !is_border_vertex(d, pm)) ++choices;
+    }
+    if(choices > 1 && refusal == Reverse_qzip_status::AVAILABLE) refusal = Reverse_qzip_status::CLEANED_UP;
+  }
+
+  void merge(std::size_t i, std::size_t step, bool new_vertex)
+  {
+    if(merged.empty()) merged.resize(names.size());
+    if(merged[i].step == npos) { merged[i].step = step; merged[i].new_vertex = new_vertex; }
+  }
+
+  // the position of the chain step the k-th atomic operation belongs to, or npos for the prelude and
+  // the clean-up (the chain's operations come in path order, after the prelude)
+  std::size_t chain_step(std::size_t k)
+  {
+    if(k < plan.prelude.size()) return npos;
+    while(next_step + 1 < plan.path.size() && plan.operations[next_step] == Strip_operation::NO_OPERATION) ++next_step;
+    return next_step + 1 < plan.path.size() ? next_step++ : npos;
+  }
+
+  bool is_merged(std::size_t i) const { return !merged.empty() && merged[i].step != npos; }
+
+  // the clean-up collapse that removed the live path vertex named v, or npos
+  std::size_t removed_by_cleanup(vertex_descriptor v, std::size_t after = 0) const
+  {
+    for(std::size_t m = after; m < cleanups.size(); ++m) if(cleanups[m].removed == v) return m;
+    return npos;
   }
 
 public:
-  Reverse_recorder(const Surgery_plan<PolygonMesh>& plan, UserVisitor user)
-    : plan(plan), user(user), reverse_ops(plan.path.size(), Strip_operation::NO_OPERATION)
-  {
-    for(std::size_t j = 0; j + 1 < plan.path.size(); ++j)
-    {
-      const Strip_operation op = plan.operations[j];
-      if(is_collapse(op)) collapse_steps.push_back(j);
-      else if(is_split(op)) reverse_ops[j] = Strip_operation::LEFT_COLLAPSE;
-    }
-  }
+  Reverse_recorder(const PolygonMesh& pm, const Plan& plan, UserVisitor user)
+    : pm(pm), plan(plan), user(user),
+      created_names(plan.created_vertices.empty() ? std::vector<vertex_descriptor>() : plan.path),
+      names(plan.created_vertices.empty() ? plan.path : created_names),
+      reverse_ops(plan.path.size(), Strip_operation::NO_OPERATION)
+  {}
 
-  void on_qzip_started(const Surgery_plan<PolygonMesh>& p) { user.on_qzip_started(p); }
+  void on_qzip_started(const Plan& p) { user.on_qzip_started(p); }
 
   void on_collapse(halfedge_descriptor h, const PolygonMesh& pm)
   {
-    settle(pm);
+    settle();
+    check_valence_6();
     // face(h) = (d, a, b, c): c is merged into a; RC: h = v->w, so a = w, b = x, d = v; LC: h = x->w, b = v, d = x
     const vertex_descriptor a = target(h, pm), b = target(next(h, pm), pm);
     const vertex_descriptor c = target(next(next(h, pm), pm), pm), d = source(h, pm);
-    for(vertex_descriptor v : { a, b, c, d }) see(v, pm);
-    if(collapses_seen < collapse_steps.size())
+    const std::size_t k = operations_seen++;
+    const std::size_t j = chain_step(k);
+    if(j != npos)
     {
-      const std::size_t j = collapse_steps[collapses_seen];
       const Strip_operation op = plan.operations[j];
-      const auto visited_end = plan.path.begin() + std::ptrdiff_t(j + 1);
-      if(std::find(plan.path.begin(), visited_end, c) != visited_end) refusal = Reverse_qzip_status::PATH_VERTEX_MERGED;
+      // the path vertices merged away: those named c (on the side of the collapsed quad), and in a
+      // reverse plan, other names of w = a (on the other side)
+      for(std::size_t i = 0; i <= j; ++i)
+        if(!is_merged(i) && (names[i] == c || names[i] == a))
+          merge(i, j, (names[i] == c) == (op == Strip_operation::LEFT_COLLAPSE));
       if(j == 0 || !is_collapse(plan.operations[j - 1]) || kept_corner == c) reverse_ops[j] = rotate(op, 2);
       else if(kept_corner == a)
         reverse_ops[j] = op == Strip_operation::RIGHT_COLLAPSE ? Strip_operation::LEFT_SPLIT : Strip_operation::RIGHT_SPLIT;
       else if(refusal == Reverse_qzip_status::AVAILABLE) refusal = Reverse_qzip_status::GUIDE_NOT_RESTORABLE;
-      kept_corner = b == plan.path[j] ? d : b;
+      kept_corner = b == names[j] ? d : b;
     }
-    ++collapses_seen;
+    else if(k >= plan.prelude.size()) // clean-up: undone by the split of a between b->a and d->a
+      cleanups.push_back(Cleanup{ Atomic_operation{ a, b, d }, c });
+    else
+      valence_6 = a;
     user.on_collapse(h, pm);
   }
 
   void on_split(halfedge_descriptor h1, halfedge_descriptor h2, const PolygonMesh& pm)
   {
-    settle(pm);
-    for(vertex_descriptor v : { target(h1, pm), source(h1, pm), source(h2, pm) }) see(v, pm);
-    last_split = h2;
+    settle();
+    check_valence_6();
+    const std::size_t k = operations_seen++;
+    const std::size_t j = chain_step(k);
+    if(j != npos) reverse_ops[j] = Strip_operation::LEFT_COLLAPSE;
+    if(k < plan.prelude.size() || j != npos)
+    {
+      if(!plan.created_vertices.empty())
+      {
+        last_split = h2;
+        last_split_vertex = target(h1, pm);
+        last_split_position = k < plan.prelude.size() ? plan.path.size() + k : j;
+      }
+    }
+    else // clean-up: undone by the collapse of the new quad, on the left of h2 = d->v, keeping v
+      cleanups.push_back(Cleanup{ Atomic_operation{ target(h1, pm), source(h2, pm), GT::null_vertex() },
+                                  GT::null_vertex() });
     user.on_split(h1, h2, pm);
   }
 
-  void on_qzip_finished(const Surgery_plan<PolygonMesh>& p, bool done)
+  void on_qzip_finished(const Plan& p, bool done)
   {
+    if(done) { settle(); check_valence_6(); }
     last_split = GT::null_halfedge();
+    valence_6 = GT::null_vertex();
     user.on_qzip_finished(p, done);
   }
 
-  // fills r.reverse_status and r.reverse_plan after the execution
-  void make_reverse(const PolygonMesh& pm, Qzip_result<PolygonMesh>& r) const
+  // fills r.reverse_status and r.reverse_plan after the execution; `cancelled`: the executor saw
+  // singularities cancelled (interior valences or border defects)
+  void make_reverse(Qzip_result<PolygonMesh>& r, bool cancelled) const
   {
     if(!r.is_done()) return;
-    if(r.number_of_cleanups != 0) { r.reverse_status = Reverse_qzip_status::CLEANED_UP; return; }
+    if(cancelled) { r.reverse_status = Reverse_qzip_status::SINGULARITIES_CANCELLED; return; }
     if(refusal != Reverse_qzip_status::AVAILABLE) { r.reverse_status = refusal; return; }
-    std::size_t singular_before = 0, singular_after = 0;
-    for(const auto& kv : first_valence) if(kv.second != -1 && kv.second != 4) ++singular_before;
-    for(vertex_descriptor v : r.touched_vertices) if(!is_border_vertex(v, pm) && valence(v, pm) != 4) ++singular_after;
-    if(singular_after < singular_before) { r.reverse_status = Reverse_qzip_status::SINGULARITIES_CANCELLED; return; }
-
-    const std::size_t n = plan.path.size();
-    Surgery_plan<PolygonMesh>& rev = r.reverse_plan;
-    rev.path.assign(plan.path.rbegin(), plan.path.rend());
-    rev.operations.assign(reverse_ops.rbegin() + 1, reverse_ops.rend());
-    rev.operations.push_back(Strip_operation::NO_OPERATION);
-    if(is_split(rev.operations[0]))
+    if(is_border_vertex(names.back(), pm)) { r.reverse_status = Reverse_qzip_status::BORDER_DEFECT_MOVED; return; }
+    // the inverse of a clean-up operation is named by vertices of the final mesh: none may have been
+    // removed by a later clean-up
+    for(std::size_t m = 0; m < cleanups.size(); ++m)
     {
-      rev.path.insert(rev.path.begin(), kept_corner);
-      rev.operations.insert(rev.operations.begin(), Strip_operation::NO_OPERATION);
+      const Atomic_operation& o = cleanups[m].inverse;
+      for(vertex_descriptor v : { o.v, o.b, o.d })
+        if(v != GT::null_vertex() && removed_by_cleanup(v, m + 1) != npos)
+        { r.reverse_status = Reverse_qzip_status::CLEANED_UP; return; }
     }
-    CGAL_assertion(rev.path.size() == rev.operations.size() && rev.path.size() >= n);
+
+    const std::size_t n = names.size();
+    const std::size_t offset = is_split(reverse_ops[n - 2]) ? 1 : 0; // starts at the last kept corner
+    const std::size_t size = n + offset;
+    Plan& rev = r.reverse_plan;
+    rev.path.assign(size, GT::null_vertex());
+    rev.operations.assign(size, Strip_operation::NO_OPERATION);
+    for(std::size_t j = 0; j + 1 < n; ++j) rev.operations[offset + n - 2 - j] = reverse_ops[j];
+    rev.prelude.clear();
+    for(std::size_t m = cleanups.size(); m-- > 0; ) rev.prelude.push_back(cleanups[m].inverse);
+    rev.created_vertices.clear();
+    // names the reverse path vertex at position p, which is `v` at the end of the Q-zip
+    auto name = [&](std::size_t p, vertex_descriptor v, const Merge* by_chain)
+    {
+      if(by_chain != nullptr)
+        rev.created_vertices.push_back(Created_vertex{ p, offset + n - 2 - by_chain->step, by_chain->new_vertex });
+      else if(const std::size_t m = removed_by_cleanup(v); m != npos)
+        rev.created_vertices.push_back(Created_vertex{ p, size + cleanups.size() - 1 - m, true });
+      else
+        rev.path[p] = v;
+    };
+    if(offset == 1) name(0, kept_corner, nullptr);
+    for(std::size_t i = n; i-- > 0; )
+      name(offset + n - 1 - i, names[i], is_merged(i) ? &merged[i] : nullptr);
+    CGAL_assertion(std::is_sorted(rev.created_vertices.begin(), rev.created_vertices.end(),
+                                  [](const Created_vertex& x, const Created_vertex& y) { return x.index < y.index; }));
     rev.sketch = rev.path;
     rev.source = rev.path.front();
     rev.target = rev.path.back();
@@ -267,11 +373,11 @@ Qzip_result<PolygonMesh> run_qzip(PolygonMesh& pm, Operation_log<PolygonMesh, Ve
   Default_qzip_visitor<PolygonMesh> default_visitor;
   User_visitor user = parameters::choose_parameter(parameters::get_parameter_reference(np, CGAL::internal_np::visitor),
                                                    default_visitor);
-  Reverse_recorder<PolygonMesh, User_visitor> recorder(plan, user);
+  Reverse_recorder<PolygonMesh, User_visitor> recorder(pm, plan, user);
   const auto np_recording = np.visitor(std::ref(recorder));
   Chain_executor<PolygonMesh, VertexPointMap, std::decay_t<decltype(np_recording)> > exec(pm, log, np_recording);
   Qzip_result<PolygonMesh> r = exec.run(plan);
-  recorder.make_reverse(pm, r);
+  recorder.make_reverse(r, exec.cancelled_singularities());
   return r;
 }
 
@@ -352,11 +458,13 @@ Q-zip (the elements re-created have new descriptors), the positions are not rest
 operations place the vertices as usual). The result carries in turn the reverse of the reverse, which
 redoes the Q-zip.
 
-A Q-zip has a reverse Q-zip unless (see `Reverse_qzip_status`) it cancelled singularities (a Q-zip never
-creates any), it needed the valence-2/valence-6 clean-up, or one of its collapses merged away a vertex of
-the path it had already visited (the end adjustment of a valence-5 terminal singularity with a collapse
-does so); `done.reverse_status` says which. Like every execution the reverse is transactional: if it
-cannot be completed the mesh is restored.
+When the Q-zip needed the valence-2/valence-6 clean-up, the reverse plan first undoes it
+(`Surgery_plan::prelude`); when a collapse of the Q-zip merged away a vertex of the path it had already
+visited, the reverse plan names that vertex as the one a split of its own chain re-creates
+(`Surgery_plan::created_vertices`). A Q-zip has no reverse Q-zip (see `Reverse_qzip_status`) when it
+cancelled singularities (a Q-zip never creates any), when it moved a defect along the border, or in the
+rare clean-ups that cannot be undone first; `done.reverse_status` says which. Like every execution the
+reverse is transactional: if it cannot be completed the mesh is restored.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"

@@ -35,7 +35,9 @@ A Q-zip surgery plan: plain data, computed without touching the mesh by `plan_qz
 
 `path` is the adjusted surgery path (after the end-point preparation of the paper's Sec. 2.6) and
 `operations[i]` the strip operation performed at `path[i]` on the way to `path[i+1]`; `operations` has
-one entry per vertex of `path`, the last one being `NO_OPERATION`.
+one entry per vertex of `path`, the last one being `NO_OPERATION`. A reverse plan (`Qzip_result::reverse_plan`,
+see `reverse_qzip()`) may also start with atomic operations (`prelude`) and name vertices of `path` that its
+own execution creates (`created_vertices`).
 */
 template <typename PolygonMesh>
 struct Surgery_plan

@@ -7,9 +7,11 @@
 
 #include <CGAL/Qzip/qzip.h>
 #include <CGAL/Qzip/preprocess.h>
+#include <CGAL/Qzip/singularities.h>
 
 #include <CGAL/Random.h>
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <iostream>
@@ -17,28 +19,36 @@
 #include <string>
 #include <vector>
 
+// defined in test_qzip.cpp (before main())
+template <typename Mesh> void make_grid_with_border_steps(Mesh& m, unsigned seed);
+
 namespace qzip_test {
 
 /// how the random Q-zips of `random_reverse_qzips()` went, by `Reverse_qzip_status`.
 struct Reverse_counters
 {
-  std::size_t forward_done = 0, reversed = 0, redone = 0;
+  std::size_t forward_done = 0, reversed = 0, redone = 0, redo_refused = 0;
+  std::size_t with_prelude = 0, with_created = 0; // reversed Q-zips whose reverse undid a clean-up, re-created a path vertex
   std::map<CGAL::Qzip::Reverse_qzip_status, std::size_t> by_status;
 
   void add(const Reverse_counters& o)
   {
-    forward_done += o.forward_done; reversed += o.reversed; redone += o.redone;
+    forward_done += o.forward_done; reversed += o.reversed; redone += o.redone; redo_refused += o.redo_refused;
+    with_prelude += o.with_prelude; with_created += o.with_created;
     for(const auto& kv : o.by_status) by_status[kv.first] += kv.second;
   }
+  std::size_t count(CGAL::Qzip::Reverse_qzip_status s) const
+  { auto it = by_status.find(s); return it == by_status.end() ? std::size_t(0) : it->second; }
   void print(const char* what) const
   {
     typedef CGAL::Qzip::Reverse_qzip_status S;
-    auto n = [this](S s) { auto it = by_status.find(s); return it == by_status.end() ? std::size_t(0) : it->second; };
     std::cout << "  " << what << ": " << forward_done << " Q-zips done, " << reversed
-              << " undone by their reverse Q-zip (isomorphic), " << redone << " redone by the reverse of the reverse; "
-              << "no reverse: " << n(S::SINGULARITIES_CANCELLED) << " cancelled singularities, " << n(S::CLEANED_UP)
-              << " cleaned up, " << n(S::PATH_VERTEX_MERGED) << " merged a path vertex, " << n(S::GUIDE_NOT_RESTORABLE)
-              << " without a guide" << std::endl;
+              << " undone by their reverse Q-zip (isomorphic; " << with_prelude << " undoing a clean-up first, "
+              << with_created << " re-creating merged path vertices), " << redone
+              << " redone by the reverse of the reverse (" << redo_refused << " redos refused); no reverse: "
+              << count(S::SINGULARITIES_CANCELLED) << " cancelled singularities, " << count(S::CLEANED_UP)
+              << " clean-up not undoable, " << count(S::BORDER_DEFECT_MOVED) << " moved a border defect, "
+              << count(S::GUIDE_NOT_RESTORABLE) << " without a guide" << std::endl;
   }
 };
 
@@ -94,6 +104,17 @@ Reverse_counters random_reverse_qzips(Mesh& m, std::size_t count, unsigned seed)
         assert(rev.is_realizable() && rev.path.size() == rev.operations.size());
         assert(rev.operations.back() == Q::Strip_operation::NO_OPERATION);
         assert(rev.number_of_collapses() == r.number_of_splits && rev.number_of_splits() == r.number_of_collapses);
+        assert(rev.prelude.size() == r.number_of_cleanups);
+        for(std::size_t i = 0; i < rev.path.size(); ++i)
+        {
+          const bool created = std::any_of(rev.created_vertices.begin(), rev.created_vertices.end(),
+                                           [i](const auto& cv) { return cv.index == i; });
+          assert(created == (rev.path[i] == boost::graph_traits<Mesh>::null_vertex()));
+        }
+        for(const auto& cv : rev.created_vertices)
+          assert(cv.split < cv.index || (cv.split >= rev.path.size() && cv.split < rev.path.size() + rev.prelude.size()));
+        if(!rev.prelude.empty()) ++c.with_prelude;
+        if(!rev.created_vertices.empty()) ++c.with_created;
         const bool redo = it % 4 == 0;
         Mesh after;
         if(redo) copy_mesh(m, after);
@@ -103,6 +124,13 @@ Reverse_counters random_reverse_qzips(Mesh& m, std::size_t count, unsigned seed)
         assert(CGAL::is_valid_polygon_mesh(m));
         assert(are_isomorphic(m, original));
         ++c.reversed;
+        if(redo && back.reverse_status != Q::Reverse_qzip_status::AVAILABLE)
+        {
+          // a reverse plan is undone by its own reverse, except when its prelude re-created a
+          // valence-6 vertex with several admissible splits
+          assert(back.reverse_status == Q::Reverse_qzip_status::CLEANED_UP && !rev.prelude.empty());
+          ++c.redo_refused;
+        }
         if(redo && back.reverse_status == Q::Reverse_qzip_status::AVAILABLE)
         {
           const auto again = Q::reverse_qzip(m, back);
@@ -117,7 +145,7 @@ Reverse_counters random_reverse_qzips(Mesh& m, std::size_t count, unsigned seed)
         assert(number_of_singularities(m) < singularities);
         break;
       case Q::Reverse_qzip_status::CLEANED_UP:
-        assert(r.number_of_cleanups > 0);
+        assert(r.number_of_cleanups > 1);
         break;
       default:
         break;
@@ -185,6 +213,65 @@ Reverse_counters reverse_qzips_on_grids(std::size_t count, unsigned seed)
   return c;
 }
 
+/// Q-zips to border targets (a border vertex with one quad too many, see `border_endpoint_qzips()` in
+/// test_qzip.cpp): each is reversed exactly or refused up front, because it cancelled a defect or moved
+/// it along the border. Returns the counters; every Q-zip is undone by a history.
+template <typename Mesh>
+Reverse_counters reverse_border_qzips(Mesh& m, std::size_t max_length)
+{
+  namespace Q = CGAL::Qzip;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  Reverse_counters c;
+  Mesh original;
+  copy_mesh(m, original);
+  std::vector<vertex_descriptor> sources, targets;
+  for(vertex_descriptor v : vertices(m))
+  {
+    if(on_border(v, m)) { if(Q::vertex_defect(v, m) == 1) targets.push_back(v); }
+    else if(valence(v, m) == 3 || valence(v, m) == 5) sources.push_back(v);
+  }
+  std::vector<std::pair<Point, Point> > pairs; // by position: undos may re-create vertices
+  for(vertex_descriptor t : targets)
+    for(vertex_descriptor s : sources)
+    {
+      const auto path = Q::shortest_surgery_path(m, s, t);
+      if(path.size() >= 2 && path.size() <= max_length + 1)
+        pairs.emplace_back(get(CGAL::vertex_point, m, s), get(CGAL::vertex_point, m, t));
+    }
+  for(const auto& pair : pairs)
+    for(int motion = 0; motion < 4; ++motion)
+    {
+      std::map<Point, vertex_descriptor> at;
+      for(vertex_descriptor v : vertices(m)) at[get(CGAL::vertex_point, m, v)] = v;
+      const auto sketch = Q::shortest_surgery_path(m, at.at(pair.first), at.at(pair.second));
+      const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion));
+      if(!plan.is_realizable()) continue;
+      Q::Qzip_history<Mesh> history(m);
+      const auto r = Q::execute_qzip(m, plan, history);
+      if(!r.is_done()) continue;
+      ++c.forward_done;
+      ++c.by_status[r.reverse_status];
+      if(r.reverse_status == Q::Reverse_qzip_status::AVAILABLE)
+      {
+        assert(!on_border(plan.path.back(), m));
+        Q::Qzip_history<Mesh> back_history(m);
+        const auto back = Q::execute_qzip(m, r.reverse_plan, back_history);
+        assert(back.is_done() && are_isomorphic(m, original));
+        ++c.reversed;
+        back_history.undo_all();
+      }
+      else
+      {
+        assert(r.reverse_status == Q::Reverse_qzip_status::SINGULARITIES_CANCELLED ||
+               r.reverse_status == Q::Reverse_qzip_status::BORDER_DEFECT_MOVED);
+        assert(!Q::reverse_qzip(m, r).is_done());
+      }
+      history.undo_all();
+      assert(are_isomorphic(m, original));
+    }
+  return c;
+}
+
 /// the reverse Q-zip on planted grids and real meshes, Surface_mesh and Polyhedron_3; `per_mesh` bounds
 /// the number of Q-zips per mesh.
 inline void test_reverse_qzip(std::size_t per_mesh)
@@ -211,6 +298,33 @@ inline void test_reverse_qzip(std::size_t per_mesh)
   for(const Reverse_counters* c : { &grids_sm, &grids_ph, &real_sm, &real_ph })
     assert(c->forward_done > 0 && c->reversed > 0);
   assert(grids_sm.redone > 0 && real_sm.redone > 0);
+  // clean-ups undone first and merged path vertices re-created, on both mesh types
+  assert(real_sm.with_prelude > 0 && real_ph.with_prelude > 0 && real_sm.with_created > 0 && real_ph.with_created > 0);
+
+  Reverse_counters border_sm, border_ph;
+  for(unsigned seed = 1; seed <= 2; ++seed)
+  {
+    Surface_mesh sm;
+    make_grid_with_border_steps(sm, seed);
+    border_sm.add(reverse_border_qzips(sm, 14));
+    Polyhedron ph;
+    make_grid_with_border_steps(ph, seed);
+    border_ph.add(reverse_border_qzips(ph, 14));
+  }
+  border_sm.print("reverse Q-zips to border targets, planted grids, Surface_mesh");
+  border_ph.print("reverse Q-zips to border targets, planted grids, Polyhedron_3");
+  assert(border_sm.count(CGAL::Qzip::Reverse_qzip_status::BORDER_DEFECT_MOVED) > 0);
+  assert(border_sm.forward_done == border_ph.forward_done);
+  Reverse_counters border_real;
+  for(const char* f : { "data/polylap_suzanne_half.obj", "data/trimesh_target.obj" })
+  {
+    Surface_mesh m;
+    const bool ok = read_mesh(f, m);
+    assert(ok);
+    border_real.add(reverse_border_qzips(m, 10));
+  }
+  border_real.print("reverse Q-zips to border targets, bundled meshes with borders, Surface_mesh");
+  assert(border_real.forward_done > 0);
 }
 
 } // namespace qzip_test

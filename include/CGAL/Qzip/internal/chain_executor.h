@@ -68,9 +68,11 @@ class Chain_executor
 
   typedef typename Kernel_traits<Point>::Kernel Geom_traits;
 
-  // what a vertex is as a singularity: 0 when regular, its valence when it is an interior vertex away
-  // from features, 100 + its defect (paper's sector rule) on the border or on a feature
-  struct Before { int valence; bool border; int code; };
+  // a touched vertex before the surgery: whether it was on the border, and its singularity code (see
+  // singularity_code())
+  struct Before { bool border; int code; };
+  // what one turn around a vertex tells
+  struct Around { int valence = 0; int faces = 0; bool border = false; bool on_feature = false; };
 
   PolygonMesh& pm;
   Operation_log<PolygonMesh, VertexPointMap>& log;
@@ -105,13 +107,18 @@ public:
     Qzip_result<PolygonMesh> r;
     r.status = plan.status;
     if(!plan.is_realizable()) return r;
-    const Point source_at = get(log_vpm(), plan.source), target_at = get(log_vpm(), plan.target);
-    source_code = singularity_code(plan.source);
-    target_code = singularity_code(plan.target);
+    // the ends of a reverse plan may be created by the execution (Surgery_plan::created_vertices)
+    const bool ends_exist = plan.source != GT::null_vertex() && plan.target != GT::null_vertex();
+    const Point source_at = ends_exist ? get(log_vpm(), plan.source) : Point();
+    const Point target_at = ends_exist ? get(log_vpm(), plan.target) : Point();
+    source_code = ends_exist ? singularity_code(plan.source) : 0;
+    target_code = ends_exist ? singularity_code(plan.target) : 0;
     visitor.on_qzip_started(plan);
     log.mark();
     Execution_failure failure = Execution_failure::NONE;
-    if(!run_chain(plan, failure)) {}
+    path = &plan.path;
+    if(!plan.created_vertices.empty()) { named_path = plan.path; path = &named_path; }
+    if(!run_prelude(plan, failure) || !run_chain(plan, failure)) {}
     else if(!clean_up()) failure = Execution_failure::CLEANUP_IMPOSSIBLE;
     else if(!valences_preserved()) failure = Execution_failure::SINGULARITY_CREATED;
     if(failure != Execution_failure::NONE)
@@ -131,10 +138,13 @@ public:
     std::unordered_set<face_descriptor, Face_hash> listed;
     for(face_descriptor f : face_order)
       if(new_faces.count(f) != 0 && listed.insert(f).second) r.scar_faces.push_back(f);
-    locate_moved_pair(source_at, target_at, r);
+    if(ends_exist) locate_moved_pair(source_at, target_at, r);
     visitor.on_qzip_finished(plan, true);
     return r;
   }
+
+  // after a done run: whether the surgery cancelled singularities (interior valences or border defects)
+  bool cancelled_singularities() const { return cancelled; }
 
 private:
   VertexPointMap log_vpm() const { return log.vertex_point_map(); }
@@ -143,7 +153,8 @@ private:
   {
     if(before.count(v) == 0 && created.count(v) == 0)
     {
-      before[v] = Before{ int(valence(v, pm)), is_border_vertex(v, pm), singularity_code(v) };
+      const Around a = around(v);
+      before[v] = Before{ a.border, singularity_code(v, a) };
       alive.insert(v);
       vertex_order.push_back(v);
     }
@@ -202,13 +213,44 @@ private:
     return true;
   }
 
+  // names the vertices of the path created by the split at `split` (a position in the path, or
+  // path size + m for prelude[m]); `kept` is the split vertex, `made` the new one
+  void name_created(const Surgery_plan<PolygonMesh>& plan, std::size_t split, vertex_descriptor kept, vertex_descriptor made)
+  {
+    for(const auto& cv : plan.created_vertices)
+      if(cv.split == split) named_path[cv.index] = cv.new_vertex ? made : kept;
+  }
+
+  // the atomic operations of a reverse plan performed before its chain (Surgery_plan::prelude)
+  bool run_prelude(const Surgery_plan<PolygonMesh>& plan, Execution_failure& failure)
+  {
+    for(std::size_t m = 0; m < plan.prelude.size(); ++m)
+    {
+      failed_step = 0;
+      const auto& op = plan.prelude[m];
+      const auto bv = halfedge(op.b, op.v, pm);
+      if(op.d == GT::null_vertex())
+      {
+        if(!bv.second || !collapse(bv.first)) { failure = Execution_failure::COLLAPSE_REFUSED; return false; }
+        continue;
+      }
+      const auto dv = halfedge(op.d, op.v, pm);
+      if(!bv.second || !dv.second || !split(bv.first, dv.first)) { failure = Execution_failure::SPLIT_REFUSED; return false; }
+      if(!plan.created_vertices.empty())
+        name_created(plan, plan.path.size() + m, op.v, target(next(next(last_quad, pm), pm), pm));
+    }
+    return true;
+  }
+
   bool run_chain(const Surgery_plan<PolygonMesh>& plan, Execution_failure& failure)
   {
+    const std::vector<vertex_descriptor>& P = *path;
     halfedge_descriptor guide = GT::null_halfedge();
-    for(std::size_t j = 0; j + 1 < plan.path.size(); ++j)
+    for(std::size_t j = 0; j + 1 < P.size(); ++j)
     {
       failed_step = j;
-      const auto vw = halfedge(plan.path[j], plan.path[j + 1], pm);
+      if(P[j] == GT::null_vertex() || P[j + 1] == GT::null_vertex()) { failure = Execution_failure::PATH_EDGE_MISSING; return false; }
+      const auto vw = halfedge(P[j], P[j + 1], pm);
       if(!vw.second) { failure = Execution_failure::PATH_EDGE_MISSING; return false; }
       const halfedge_descriptor o = vw.first;
       // a collapse may not remove a vertex the path has still to visit (e.g. on a cube, where the path
@@ -216,7 +258,7 @@ private:
       auto removes_path_vertex = [&](halfedge_descriptor h)
       {
         const vertex_descriptor c = target(next(next(h, pm), pm), pm);
-        return std::find(plan.path.begin() + std::ptrdiff_t(j + 1), plan.path.end(), c) != plan.path.end();
+        return std::find(P.begin() + std::ptrdiff_t(j + 1), P.end(), c) != P.end();
       };
       switch(plan.operations[j])
       {
@@ -236,9 +278,11 @@ private:
           break;
         case Strip_operation::LEFT_SPLIT:
         case Strip_operation::RIGHT_SPLIT:
-          if(guide == GT::null_halfedge() || guide == o || source(guide, pm) != plan.path[j])
+          if(guide == GT::null_halfedge() || guide == o || source(guide, pm) != P[j])
           { failure = Execution_failure::NO_GUIDE_FOR_SPLIT; return false; }
           if(!split(opposite(o, pm), opposite(guide, pm))) { failure = Execution_failure::SPLIT_REFUSED; return false; }
+          // the new vertex took the fan counterclockwise from o, on the left of the path
+          if(!plan.created_vertices.empty()) name_created(plan, j, P[j], target(next(next(last_quad, pm), pm), pm));
           guide = plan.operations[j] == Strip_operation::LEFT_SPLIT ? next(next(last_quad, pm), pm)
                                                                     : opposite(o, pm);
           break;
@@ -286,37 +330,44 @@ private:
     return false;
   }
 
+  Around around(vertex_descriptor v) const
+  {
+    Around a;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      ++a.valence;
+      if(is_border(h, pm)) a.border = true;
+      else ++a.faces;
+      if(get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm)))) a.on_feature = true;
+    }
+    return a;
+  }
+
   // the number of faces a border or feature vertex should have, from the geometry before the surgery
   // (frozen at the first look: the chain moves vertices, and a defect is a matter of connectivity); a
   // border vertex created by a split sits on a straight piece of border and should have two
-  int ideal_number_of_faces(vertex_descriptor v)
+  int ideal_number_of_faces(vertex_descriptor v, int faces)
   {
     auto it = ideal.find(v);
     if(it != ideal.end()) return it->second;
-    const Vertex_defect_info info = vertex_defect_info(v, pm, log_vpm(), ecm, Geom_traits());
-    const int n = int(number_of_faces_around(v)) - info.defect;
+    const int n = faces - vertex_defect_info(v, pm, log_vpm(), ecm, Geom_traits()).defect;
     ideal.emplace(v, n);
     return n;
   }
 
-  std::size_t number_of_faces_around(vertex_descriptor v) const
+  // what a vertex is as a singularity: 0 when regular, its valence when it is an interior vertex away
+  // from features and protected faces, 100 + its defect (paper's sector rule) otherwise
+  int singularity_code(vertex_descriptor v, const Around& a)
   {
-    std::size_t n = 0;
-    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-      if(!is_border(h, pm)) ++n;
-    return n;
-  }
-
-  int singularity_code(vertex_descriptor v)
-  {
-    if(is_border_vertex(v, pm) || constrained_around(v))
+    if(a.border || a.on_feature)
     {
-      const int defect = int(number_of_faces_around(v)) - ideal_number_of_faces(v);
+      const int defect = a.faces - ideal_number_of_faces(v, a.faces);
       return defect == 0 ? 0 : 100 + defect;
     }
-    const int d = int(valence(v, pm));
-    return d == 4 ? 0 : d;
+    return a.valence == 4 ? 0 : a.valence;
   }
+
+  int singularity_code(vertex_descriptor v) { return singularity_code(v, around(v)); }
 
   // no singularity was created: the singularity codes of the touched vertices after the surgery form
   // a sub-multiset of those before (a Q-zip whose path passes other singularities may cancel some of
@@ -328,13 +379,15 @@ private:
       if(kv.second.code != 0) was.push_back(kv.second.code);
     for(vertex_descriptor v : alive)
     {
-      const bool pre = before.count(v) != 0 && created.count(v) == 0;
-      if(is_border_vertex(v, pm) && !(pre ? before.at(v).border : true)) return false;
-      const int c = singularity_code(v);
+      const auto it = created.count(v) == 0 ? before.find(v) : before.end();
+      const Around a = around(v);
+      if(a.border && it != before.end() && !it->second.border) return false;
+      const int c = singularity_code(v, a);
       if(c != 0) is.push_back(c);
     }
     std::sort(was.begin(), was.end());
     std::sort(is.begin(), is.end());
+    cancelled = is.size() < was.size();
     return std::includes(was.begin(), was.end(), is.begin(), is.end());
   }
 
@@ -365,6 +418,9 @@ private:
   }
 
   int source_code = 0, target_code = 0;
+  bool cancelled = false;
+  const std::vector<vertex_descriptor>* path = nullptr; // the plan's path, or named_path
+  std::vector<vertex_descriptor> named_path;             // with the vertices the execution created
   Split_delimiters<PolygonMesh> last_delimiters;
   halfedge_descriptor last_quad;
   std::size_t failed_step = 0;
