@@ -3,11 +3,15 @@
 // Prints markdown tables on stdout (progress on stderr).
 //
 // usage: benchmark_optimizer [--corpus DIR] [--runs R] [--max-level L] [--skip-corpus] [--skip-large]
-//                            [--skip-genus3] [--measure]
+//                            [--skip-genus3] [--measure] [--mesh FILE]... [--trace]
 //   --runs R       runs per mesh below 100k quads, the median time is reported (default 3)
 //   --max-level L  Catmull-Clark levels of the scaling series (default 4: ~1M quads)
 //   --measure      recount the singularities after every surgery (slow) to measure how often the change
 //                  predicted from the plan is the actual one (meshes below 20k quads)
+//   --mesh FILE    only this mesh (repeatable): no corpus, scaling series nor genus-3 test
+//   --trace        print every batch of the last run on stderr (singularities, faces, time)
+// The summary line of each mesh on stderr also gives the median CPU time of the process (std::clock())
+// during optimize_singularities(), less sensitive than wall time to other jobs on the machine.
 
 #include "qzip_test_utils.h"
 
@@ -22,6 +26,7 @@
 
 #include <array>
 #include <cstdio>
+#include <ctime>
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -44,6 +49,18 @@ struct Measure_visitor : public Q::Default_optimizer_visitor<Mesh>
     count = now;
   }
   void on_batch_finished(const Q::Optimizer_statistics& s) { count = s.number_of_singularities; }
+};
+
+static bool trace = false;
+
+struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
+{
+  void on_batch_finished(const Q::Optimizer_statistics& s)
+  {
+    std::cerr << "    batch " << s.batch << ": " << s.number_of_singularities << " singularities, " << s.number_of_faces
+              << " faces, " << s.surgeries_in_last_batch << " surgeries, " << s.elapsed_seconds << " s (scoring "
+              << s.scoring_seconds << ", execution " << s.execution_seconds << ")" << std::endl;
+  }
 };
 
 struct Row
@@ -77,16 +94,22 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
   copy_mesh(input, pre);
   Q::preprocess_valences(pre);
   row.before = Q::compute_mesh_report(pre);
-  std::vector<double> times;
+  std::vector<double> times, cpu;
   for(int i = 0; i < runs; ++i)
   {
     Mesh m;
     copy_mesh(pre, m);
     CGAL::Real_timer t;
+    const std::clock_t c0 = std::clock();
     t.start();
-    row.stats = Q::optimize_singularities(m, CGAL::parameters::random_seed(0));
+    Trace_visitor tracer;
+    if(trace && i + 1 == runs)
+      row.stats = Q::optimize_singularities(m, CGAL::parameters::random_seed(0).visitor(std::ref(tracer)));
+    else
+      row.stats = Q::optimize_singularities(m, CGAL::parameters::random_seed(0));
     t.stop();
     times.push_back(t.time());
+    cpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
     if(i + 1 == runs)
     {
       row.after = Q::compute_mesh_report(m);
@@ -102,9 +125,10 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
     }
   }
   std::sort(times.begin(), times.end());
+  std::sort(cpu.begin(), cpu.end());
   row.seconds = times[times.size() / 2];
   std::cerr << "  " << name << ": " << singular(row.before) << " -> " << singular(row.after) << " singularities, "
-            << row.before.number_of_faces << " -> " << row.after.number_of_faces << " faces, " << fmt(row.seconds) << " s"
+            << row.before.number_of_faces << " -> " << row.after.number_of_faces << " faces, " << fmt(row.seconds) << " s (CPU " << fmt(cpu[cpu.size() / 2]) << " s)"
             << std::endl;
   return row;
 }
@@ -171,6 +195,7 @@ int main(int argc, char** argv)
   std::string corpus = QZIP_SHARED_DATA_DIR;
   int runs = 3, max_level = 4;
   bool skip_corpus = false, skip_large = false, skip_genus3 = false, measure = false;
+  std::vector<std::string> meshes;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -181,7 +206,22 @@ int main(int argc, char** argv)
     else if(a == "--skip-large") skip_large = true;
     else if(a == "--skip-genus3") skip_genus3 = true;
     else if(a == "--measure") measure = true;
+    else if(a == "--trace") trace = true;
+    else if(a == "--mesh" && i + 1 < argc) meshes.push_back(argv[++i]);
     else { std::cerr << "error: unknown argument '" << a << "'" << std::endl; return EXIT_FAILURE; }
+  }
+
+  if(!meshes.empty())
+  {
+    std::cout << "\n### Selected meshes (default parameters, seed 0, median of " << runs << " runs)\n\n";
+    print_header(measure);
+    for(const std::string& f : meshes)
+    {
+      Mesh m;
+      if(!read_mesh(f, m)) { std::cout << "| " << f << " | unreadable |\n"; continue; }
+      print_row(run(f, m, runs, measure), measure);
+    }
+    return EXIT_SUCCESS;
   }
 
   if(!skip_corpus)

@@ -9,6 +9,9 @@
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 
+#include <algorithm>
+#include <limits>
+#include <map>
 #include <set>
 #include <tuple>
 
@@ -113,6 +116,32 @@ void test_subdivision_sphere()
   assert(sorted_points(sm) == sorted_points(ph));
 }
 
+// the context's closest singularities of v (closed mesh) are the closest ones by a plain breadth-first search
+template <typename PolygonMesh, typename Context>
+void check_nearest_singularities(const PolygonMesh& pm, typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                                 const Context& ctx)
+{
+  std::map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, int> dist;
+  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> queue(1, v);
+  dist[v] = 0;
+  std::vector<int> singular_distances;
+  for(std::size_t i = 0; i < queue.size(); ++i)
+  {
+    const auto u = queue[i];
+    if(u != v && degree(u, pm) != 4) singular_distances.push_back(dist[u]);
+    for(auto h : CGAL::halfedges_around_target(halfedge(u, pm), pm))
+      if(dist.emplace(source(h, pm), dist[u] + 1).second) queue.push_back(source(h, pm));
+  }
+  const auto nb = ctx.nearest_singularities(v);
+  assert(nb.size > 0 && nb.feature_distance == std::numeric_limits<int>::max());
+  std::size_t k = 0;
+  for(const auto& j : nb)
+  {
+    assert(j.distance == singular_distances[k++]);
+    assert(j.distance == dist[j.vertex] && j.defect == int(degree(j.vertex, pm)) - 4 && ctx.defect(j.vertex) == j.defect);
+  }
+}
+
 // stop predicates, no smoothing, a custom scoring functor
 struct No_collapse_scoring
 {
@@ -123,6 +152,11 @@ struct No_collapse_scoring
     ++*calls;
     assert(c.plan != nullptr && c.plan->is_realizable());
     assert(c.source_defect != 0 && c.target_defect != 0);
+    if(*calls % 16 == 1)
+    {
+      check_nearest_singularities(ctx.mesh(), c.source, ctx);
+      check_nearest_singularities(ctx.mesh(), c.source_landing, ctx);
+    }
     if(c.plan->number_of_collapses() > 0) return 1.; // refuse every surgery that collapses a quad
     return Q::Default_scoring()(c, ctx);
   }
@@ -165,7 +199,82 @@ void test_policies()
   assert(sc.number_of_faces + sc.number_of_surgeries >= sc.initial_number_of_faces);
 }
 
-// protected faces keep their vertices and positions bit for bit; feature edges survive
+typedef boost::graph_traits<Surface_mesh>::vertex_descriptor sm_vertex;
+
+// the feature edges of a mesh (dihedral angle above 60 degrees) and the positions of their vertices
+struct Features
+{
+  std::vector<std::pair<Point, Point> > segments;
+  std::set<std::pair<sm_vertex, sm_vertex> > edges;
+  std::map<sm_vertex, int> degree;
+  std::map<sm_vertex, Point> points;
+
+  template <typename FeatureMap>
+  void mark(Surface_mesh& m, FeatureMap feature)
+  {
+    for(auto e : CGAL::edges(m))
+    {
+      const auto h = halfedge(e, m);
+      if(is_border_edge(h, m)) continue;
+      const auto n1 = PMP::compute_face_normal(face(h, m), m), n2 = PMP::compute_face_normal(face(opposite(h, m), m), m);
+      if(n1 * n2 < std::cos(60. * CGAL_PI / 180.))
+      {
+        put(feature, e, true);
+        segments.emplace_back(m.point(source(h, m)), m.point(target(h, m)));
+        edges.insert(std::minmax(source(h, m), target(h, m)));
+        ++degree[source(h, m)];
+        ++degree[target(h, m)];
+      }
+    }
+    for(const auto& vd : degree) points[vd.first] = m.point(vd.first);
+  }
+
+  // the same feature edges between the same vertices; the ends of feature curves and the vertices where
+  // they branch are bit for bit where they were; the others lie on the input polylines. Returns the
+  // number of vertices that moved.
+  template <typename FeatureMap>
+  std::size_t check(const Surface_mesh& m, FeatureMap feature) const
+  {
+    std::set<std::pair<sm_vertex, sm_vertex> > after;
+    for(auto e : CGAL::edges(m))
+      if(get(feature, e)) after.insert(std::minmax(source(halfedge(e, m), m), target(halfedge(e, m), m)));
+    assert(after == edges);
+    std::size_t moved = 0;
+    for(const auto& vp : points)
+    {
+      const Point& p = m.point(vp.first);
+      if(degree.at(vp.first) != 2) assert(p == vp.second);
+      if(p == vp.second) continue;
+      ++moved;
+      double d = std::numeric_limits<double>::max();
+      for(const auto& sg : segments) d = (std::min)(d, CGAL::squared_distance(p, K::Segment_3(sg.first, sg.second)));
+      assert(d < 1e-20);
+    }
+    return moved;
+  }
+};
+
+// smoothing slides feature vertices along their curves and keeps corners fixed
+void test_feature_sliding(const std::string& fandisk)
+{
+  Surface_mesh m;
+  if(!read_mesh(fandisk, m)) { std::cerr << "cannot read " << fandisk << std::endl; assert(false); }
+  Q::preprocess_valences(m);
+  auto feature = m.add_property_map<boost::graph_traits<Surface_mesh>::edge_descriptor, bool>("e:feature", false).first;
+  Features features;
+  features.mark(m, feature);
+  assert(!features.segments.empty());
+  const std::size_t inverted = Q::compute_mesh_report(m).number_of_inverted_quads;
+  const std::vector<sm_vertex> all(vertices(m).begin(), vertices(m).end());
+  Q::smooth_quad_mesh(m, all, CGAL::parameters::edge_is_constrained_map(feature));
+  const std::size_t moved = features.check(m, feature);
+  std::cout << "smoothing fandisk: " << moved << " of " << features.points.size() << " feature vertices slid" << std::endl;
+  assert(moved > 0);
+  assert(Q::compute_mesh_report(m).number_of_inverted_quads <= inverted);
+}
+
+// protected faces keep their vertices and positions bit for bit; feature edges survive (same vertices),
+// their vertices slide along the feature polylines, feature corners do not move
 void test_protection_and_features(const std::string& fandisk)
 {
   Surface_mesh m;
@@ -174,21 +283,9 @@ void test_protection_and_features(const std::string& fandisk)
   typedef boost::graph_traits<Surface_mesh>::edge_descriptor edge_descriptor;
   typedef boost::graph_traits<Surface_mesh>::face_descriptor face_descriptor;
   auto feature = m.add_property_map<edge_descriptor, bool>("e:feature", false).first;
-  std::set<std::pair<Point, Point> > feature_segments;
-  for(edge_descriptor e : edges(m))
-  {
-    const auto h = halfedge(e, m);
-    if(is_border_edge(h, m)) continue;
-    const auto n1 = PMP::compute_face_normal(face(h, m), m), n2 = PMP::compute_face_normal(face(opposite(h, m), m), m);
-    if(n1 * n2 < std::cos(60. * CGAL_PI / 180.))
-    {
-      feature[e] = true;
-      Point a = m.point(source(h, m)), b = m.point(target(h, m));
-      if(b < a) std::swap(a, b);
-      feature_segments.insert(std::make_pair(a, b));
-    }
-  }
-  assert(!feature_segments.empty());
+  Features features;
+  features.mark(m, feature);
+  assert(!features.segments.empty());
   // protect the faces whose first vertex is among the 15% largest x
   std::vector<double> xs;
   for(face_descriptor f : faces(m)) xs.push_back(m.point(target(halfedge(f, m), m)).x());
@@ -225,15 +322,7 @@ void test_protection_and_features(const std::string& fandisk)
     }
     assert(i == 4);
   }
-  std::set<std::pair<Point, Point> > after;
-  for(edge_descriptor e : edges(m))
-    if(feature[e])
-    {
-      Point a = m.point(source(halfedge(e, m), m)), b = m.point(target(halfedge(e, m), m));
-      if(b < a) std::swap(a, b);
-      after.insert(std::make_pair(a, b));
-    }
-  assert(after == feature_segments);
+  features.check(m, feature);
 }
 
 // the shared corpus, when present: invariants on a few small meshes, both mesh types on one of them
@@ -272,6 +361,7 @@ int main(int argc, char** argv)
   const std::string fandisk = argc > 1 ? argv[1] : "data/pmp_fandisk_quads.off";
   test_subdivision_sphere();
   test_policies();
+  test_feature_sliding(fandisk);
   test_protection_and_features(fandisk);
   test_corpus();
   std::cout << "done" << std::endl;

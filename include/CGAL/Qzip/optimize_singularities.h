@@ -69,11 +69,14 @@ surgery are undone exactly. After the batch the union of its scars is smoothed a
 is asked before every batch.
 
 Since a Q-zip never creates a singularity (`execute_qzip()` rolls back otherwise), the number of
-singularities never grows; since no surgery touches the border, a constrained edge or a protected face,
-and smoothing never moves their vertices, feature curves, the border and protected faces keep their
-vertices, edges and positions bit for bit; since surgeries and smoothing are both guarded, no inverted
-quad appears when the input has none. The result depends only on the input, the parameters and the seed,
-not on the mesh data structure.
+singularities never grows. No surgery touches a constrained edge or a protected face, and the border only
+where a Q-zip moves a border defect along a straight piece of it (see `plan_qzip()`: a border vertex is
+split there, and both copies move a third of the way towards the midpoint of their border neighbours);
+smoothing moves no border vertex, slides the vertices of feature curves along the input feature polylines
+and keeps feature corners and the vertices of protected faces in place. So feature curves keep their
+vertices and edges, feature corners and protected faces keep their positions bit for bit; since surgeries
+and smoothing are both guarded, no inverted quad appears when the input has none. The result depends only
+on the input, the parameters and the seed, not on the mesh data structure.
 
 Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valences()` first.
 

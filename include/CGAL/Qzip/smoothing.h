@@ -27,6 +27,8 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <unordered_map>
 #include <utility>
@@ -37,10 +39,13 @@ namespace Qzip {
 namespace internal {
 
 // The valence-weighted Laplacian of the paper's Sec. 4.1 with projection onto a reference surface (the
-// mesh as it was when the smoother was built, triangulated, in an AABB tree). Border vertices, feature
-// vertices (on a constrained edge) and vertices of protected faces never move. A move is kept only if
-// no incident quad becomes inverted (scaled Jacobian <= 0) unless it already was, so smoothing never
-// creates an inverted quad.
+// mesh as it was when the smoother was built, triangulated, in an AABB tree). Border vertices, vertices
+// of protected faces and feature corners never move; the other feature vertices (on exactly two
+// constrained edges that turn by at most `corner_angle`) slide along their feature curve: they move halfway towards
+// the midpoint of their two feature neighbors, projected onto the feature polyline as it was when the
+// smoother was built (surgeries never edit feature edges, so the curves keep their vertices). A move is
+// kept only if no incident quad becomes inverted (scaled Jacobian <= 0) unless it already was, so
+// smoothing never creates an inverted quad.
 template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap,
           typename FaceIsConstrainedMap, typename GeomTraits>
 class Quad_smoother
@@ -63,15 +68,20 @@ class Quad_smoother
   std::vector<Triangle> triangles;
   std::unique_ptr<Tree> tree;
   std::unordered_map<vertex_descriptor, int, boost::hash<vertex_descriptor> > fixed_valence;
+  // feature vertices: their position when the smoother was built; for sliding ones, their two feature neighbors
+  struct Feature_vertex { Point origin; bool slides; vertex_descriptor a, b; };
+  std::unordered_map<vertex_descriptor, Feature_vertex, boost::hash<vertex_descriptor> > feature_vertices;
 
 public:
   double step = 0.5; // fraction of the way towards the weighted centroid
   double quality_floor = 0; // a move is kept if the incident quads stay above min(floor, their quality before)
+  double corner_angle = 45; // degrees: a feature curve turning more than this at a vertex has a corner there
 
   Quad_smoother(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
                 bool project)
     : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm)
   {
+    collect_feature_vertices();
     if(!project) return;
     for(face_descriptor f : faces(pm))
     {
@@ -86,14 +96,77 @@ public:
     tree->build();
   }
 
+  // on the border, on a protected face, or a feature vertex that does not slide
   bool is_fixed(vertex_descriptor v) const
   {
+    bool feature = false;
     for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
     {
-      if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) return true;
-      if(!is_border(h, pm) && get(fcm, face(h, pm))) return true;
+      if(is_border_edge(h, pm)) return true;
+      if(get(fcm, face(h, pm))) return true; // h is not a border halfedge here
+      if(get(ecm, edge(h, pm))) feature = true;
     }
-    return false;
+    if(!feature) return false;
+    const auto it = feature_vertices.find(v);
+    return it == feature_vertices.end() || !it->second.slides;
+  }
+
+  // records the vertices of constrained edges and which of them slide (not on the border, not on a
+  // protected face, exactly two constrained edges, no corner)
+  void collect_feature_vertices()
+  {
+    for(vertex_descriptor v : vertices(pm))
+    {
+      std::vector<vertex_descriptor> nb;
+      bool fixed = false;
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      {
+        if(is_border_edge(h, pm) || get(fcm, face(h, pm))) fixed = true;
+        else if(get(ecm, edge(h, pm))) nb.push_back(source(h, pm));
+      }
+      if(nb.empty()) continue;
+      Feature_vertex fv{ get(vpm, v), false, GT::null_vertex(), GT::null_vertex() };
+      if(!fixed && nb.size() == 2)
+      {
+        const auto u = get(vpm, v) - get(vpm, nb[0]);
+        const auto w = get(vpm, nb[1]) - get(vpm, v);
+        const double uu = CGAL::to_double(u * u), ww = CGAL::to_double(w * w), uw = CGAL::to_double(u * w);
+        // the curve turns by at most corner_angle: cos(turn) = uw / (|u||w|)
+        const double c = std::cos(corner_angle * CGAL_PI / 180.);
+        if(uu > 0 && ww > 0 && uw > 0 && uw * uw >= c * c * uu * ww) { fv.slides = true; fv.a = nb[0]; fv.b = nb[1]; }
+      }
+      feature_vertices.emplace(v, fv);
+    }
+  }
+
+  // the closest point to p on the feature polyline around the sliding vertex v, as it was when the smoother
+  // was built: the edges v-a, v-b, and the next feature edges beyond a and b
+  Point project_on_feature(vertex_descriptor v, const Point& p) const
+  {
+    const Feature_vertex& fv = feature_vertices.at(v);
+    std::vector<std::pair<Point, Point> > segments;
+    segments.emplace_back(fv.origin, feature_vertices.at(fv.a).origin);
+    segments.emplace_back(fv.origin, feature_vertices.at(fv.b).origin);
+    for(vertex_descriptor x : { fv.a, fv.b })
+    {
+      const Feature_vertex& fx = feature_vertices.at(x);
+      if(!fx.slides) continue;
+      const vertex_descriptor y = fx.a == v ? fx.b : fx.a;
+      segments.emplace_back(fx.origin, feature_vertices.at(y).origin);
+    }
+    Point best = fv.origin;
+    double best_d = (std::numeric_limits<double>::max)();
+    for(const auto& sg : segments)
+    {
+      const auto d = sg.second - sg.first;
+      const double dd = CGAL::to_double(d * d);
+      double t = dd > 0 ? CGAL::to_double((p - sg.first) * d) / dd : 0;
+      t = (std::max)(0., (std::min)(1., t));
+      const Point q = sg.first + typename GeomTraits::FT(t) * d;
+      const double e = CGAL::to_double(CGAL::squared_distance(p, q));
+      if(e < best_d) { best_d = e; best = q; }
+    }
+    return best;
   }
 
   // the valence used for the spring stiffness: the valence of an interior vertex, 4 + defect on the border/features.
@@ -132,7 +205,8 @@ public:
   }
 
   // `iterations` Jacobi sweeps over the free vertices of `region` (in the given order); returns the
-  // number of accepted moves.
+  // number of accepted moves. Sliding feature vertices are projected onto their feature curve, the others
+  // onto the surface.
   std::size_t smooth(const std::vector<vertex_descriptor>& region, int iterations)
   {
     std::vector<vertex_descriptor> free;
@@ -144,6 +218,14 @@ public:
       for(std::size_t i = 0; i < free.size(); ++i)
       {
         const vertex_descriptor v = free[i];
+        const auto fit = feature_vertices.find(v);
+        if(fit != feature_vertices.end())
+        {
+          const Point& p = get(vpm, v);
+          const Point m = CGAL::midpoint(get(vpm, fit->second.a), get(vpm, fit->second.b));
+          targets[i] = project_on_feature(v, p + typename GeomTraits::FT(step) * (m - p));
+          continue;
+        }
         const int dv = effective_valence(v);
         double x = 0, y = 0, z = 0, w = 0;
         for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
@@ -163,7 +245,7 @@ public:
       {
         const vertex_descriptor v = free[i];
         const Point old = get(vpm, v);
-        const Point np = project(targets[i], old);
+        const Point np = feature_vertices.count(v) == 0 ? project(targets[i], old) : targets[i];
         if(np == old) continue;
         const double before = min_quad_quality(v);
         put(vpm, v, np);
@@ -185,10 +267,13 @@ smooths the vertices of `vertex_range` with the valence-weighted Laplacian of th
 each edge is a spring whose stiffness is 1, 0.5 or 2 when the valences of its two vertices sum to 8,
 less than 8 or more than 8 (border and feature vertices count as `4 + defect`), and each vertex moves
 halfway towards the equilibrium of its springs, then back onto the surface as it was before the call
-(closest point in a `CGAL::AABB_tree` of its triangulated faces). Border vertices, vertices of
-constrained (feature) edges and vertices of protected faces do not move, so feature curves and
-protected regions are kept bit for bit. A move that would make an incident quad inverted (scaled
-Jacobian `<= 0`, see `quad_scaled_jacobian()`) is refused, so no quad gets inverted.
+(closest point in a `CGAL::AABB_tree` of its triangulated faces). Vertices of constrained (feature) edges slide along their feature curve: a vertex on exactly two
+constrained edges, where the curve turns by at most 45 degrees, moves halfway towards the midpoint of its
+two feature neighbors and is put back onto the feature polyline as it was before the call, so feature
+curves keep their shape and their edges; feature corners (one, three or more constrained edges, or a
+sharper turn), border vertices and vertices of protected faces do not move (protected regions and the
+border are kept bit for bit). A move that would make an incident quad inverted (scaled Jacobian `<= 0`,
+see `quad_scaled_jacobian()`) is refused, so no quad gets inverted.
 
 \tparam PolygonMesh a model of `FaceListGraph`
 \tparam VertexRange a range of vertex descriptors of `pm`
@@ -202,7 +287,7 @@ Jacobian `<= 0`, see `quad_scaled_jacobian()`) is refused, so no quad gets inver
     \cgalParamDefault{`boost::get(CGAL::vertex_point, pm)`}
   \cgalParamNEnd
   \cgalParamNBegin{edge_is_constrained_map}
-    \cgalParamDescription{feature edges; their vertices are fixed}
+    \cgalParamDescription{feature edges; their vertices slide along the feature curves, corners are fixed}
     \cgalParamDefault{no edge is constrained}
   \cgalParamNEnd
   \cgalParamNBegin{face_is_constrained_map}

@@ -30,9 +30,11 @@ is the sum of `q_m q_j / d(x, j)` over the `number_of_neighbors` closest other s
 closest border or feature vertex (a weak push away from boundaries and features). Distances are in edges.
 
 The term is the change of the energies of the two moved singularities from their vertices to their
-predicted landings (see `Qzip_candidate`), plus the change of their mutual interaction. A landing on a
-singularity of the opposite charge is a cancellation: the pair is given the distance `merge_distance`.
-Only the plan is used; the mesh is not edited.
+predicted landings (see `Qzip_candidate`), plus the change of their mutual interaction, whose distance
+after the move is measured along the path of the plan (the landings lie on it or next to its end: the
+distance the pair still has to travel). A landing on a singularity of the opposite charge is a
+cancellation: the pair is given the distance `merge_distance`. Only the plan is used; the mesh is not
+edited, and no search runs (the energies are lookups in the context).
 */
 struct Electric_term
 {
@@ -49,12 +51,23 @@ struct Electric_term
                  + moved(c.target, c.target_defect, c.target_landing, c, ctx);
     const double q = double(charge(c.source_defect) * charge(c.target_defect));
     const int before = (std::max)(1, c.sketch_length);
-    const int after = ctx.distance(c.source_landing, c.target_landing, c.sketch_length + 3);
+    const int after = distance_along_path(c);
     delta += q / (after == 0 ? merge_distance : double(after)) - q / double(before);
     return delta;
   }
 
 private:
+  // the number of path edges between the landings; the source landing is the first or second path vertex,
+  // the target landing is a path vertex or a neighbor of the last one (see `Qzip_candidate`)
+  template <typename PolygonMesh>
+  static int distance_along_path(const Qzip_candidate<PolygonMesh>& c)
+  {
+    const auto& path = c.plan->path;
+    const std::ptrdiff_t i = c.source_landing == path[0] ? 0 : 1;
+    const auto j = std::find(path.begin() + i, path.end(), c.target_landing);
+    return j != path.end() ? int(j - path.begin() - i) : int(std::ptrdiff_t(path.size()) - i);
+  }
+
   static int charge(int defect) { return (std::max)(-2, (std::min)(2, defect)); }
 
   template <typename PolygonMesh, typename Context>

@@ -54,8 +54,9 @@ At the start of each batch the context computes, in time linear in the size of t
 `max_nearest()` closest singularities of every vertex (a breadth-first search from all singularities
 at once in which each vertex keeps the first `max_nearest()` distinct sources that reach it: these are
 exactly its closest ones, up to ties), the distance of every vertex to the border and the features, and
-the closest separatrices; `nearest_singularities()` and `distance_to_separatrix()` are then lookups.
-`distance()` runs bounded breadth-first searches, a few of which are kept.
+the separatrices; `nearest_singularities()` is then a lookup, `distance_to_separatrix()` a search within
+three edges done once per vertex and batch. `distance()` runs bounded breadth-first searches, a few of
+which are kept.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`
 \tparam VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap the property maps of the optimizer
@@ -89,23 +90,34 @@ private:
   typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<int> >::type Int_map;
   typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<unsigned int> >::type Stamp_map;
 
-  struct Label { vertex_descriptor source; int distance; };
+  // the labels of label_bfs(): K sources (vertex indices) per vertex, with their distances, apart so that
+  // the search for a duplicate source reads one short contiguous row
+  struct Labels { std::vector<int> source, distance; std::vector<unsigned char> count; };
 
   PolygonMesh& pm;
   VertexPointMap vpm;
   EdgeIsConstrainedMap ecm;
   FaceIsConstrainedMap fcm;
 
-  // per batch: index of each vertex, its defect, whether it is a border/feature vertex
+  // per batch: index of each vertex, its defect, whether it is a border/feature vertex, whether a
+  // surgery path may pass through it, and the neighbors of each vertex by index (compressed rows)
   Stamp_map stamp;
   Int_map index_map;
   unsigned int epoch = 0;
   std::vector<vertex_descriptor> by_index;
   std::vector<int> defects;
-  std::vector<unsigned char> cut;
+  std::vector<unsigned char> cut, passable;
+  std::vector<int> adjacency_begin, adjacency;
   std::vector<int> feature_dist;
-  std::vector<Label> near_labels, sep_labels;
-  std::vector<unsigned char> near_count, sep_count;
+  Labels near_labels;
+  // separatrices: the singularities whose separatrices pass through each vertex (compressed rows), and,
+  // computed when first asked for in a batch, the three closest of them within m_separatrix_radius edges
+  std::vector<int> sep_begin, sep_owner;
+  mutable Labels sep_near;
+  mutable std::vector<unsigned char> sep_near_known;
+  mutable std::vector<unsigned int> visit;
+  mutable unsigned int visit_round = 0;
+  mutable std::vector<int> local_queue, local_level;
 
   int m_separatrix_length = 32;
   int m_separatrix_radius = 3;
@@ -115,8 +127,8 @@ private:
   struct Slot { vertex_descriptor source; int radius; unsigned int epoch; Stamp_map stamp; Int_map dist; };
   std::vector<Slot> slots;
   std::size_t next_slot = 0;
-  int m_distance_radius_hint = 0;
   std::vector<vertex_descriptor> queue;
+  std::vector<std::pair<int, int> > frontier, next_frontier; // (vertex, label) pairs of label_bfs()
 
 public:
   /// \cond SKIP_IN_MANUAL
@@ -150,21 +162,33 @@ public:
   {
     ++epoch;
     clear_cache();
-    by_index.clear(); defects.clear(); cut.clear();
-    std::vector<vertex_descriptor> singular;
+    by_index.clear(); defects.clear(); cut.clear(); passable.clear(); adjacency_begin.clear(); adjacency.clear();
     for(vertex_descriptor v : vertices(pm))
     {
       if(halfedge(v, pm) == GT::null_halfedge()) continue;
-      const bool c = is_border_or_feature(v);
-      const int d = c ? internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect
-                      : int(internal::valence(v, pm)) - 4;
       put(stamp, v, epoch);
       put(index_map, v, int(by_index.size()));
       by_index.push_back(v);
+    }
+    std::vector<vertex_descriptor> singular;
+    for(vertex_descriptor v : by_index)
+    {
+      bool c = false, p = false;
+      adjacency_begin.push_back(int(adjacency.size()));
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      {
+        adjacency.push_back(get(index_map, source(h, pm)));
+        if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) c = true;
+        if(!is_border(h, pm) && get(fcm, face(h, pm))) p = true;
+      }
+      const int d = c ? internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect
+                      : int(adjacency.size()) - adjacency_begin.back() - 4;
       defects.push_back(d);
       cut.push_back(c ? 1 : 0);
+      passable.push_back(c || p ? 0 : 1);
       if(d != 0) singular.push_back(v);
     }
+    adjacency_begin.push_back(int(adjacency.size()));
     // an order that does not depend on descriptors (the seeds' order breaks ties)
     std::sort(singular.begin(), singular.end(), [this](vertex_descriptor a, vertex_descriptor b)
     {
@@ -175,34 +199,43 @@ public:
       return pa.z() < pb.z();
     });
     // closest singularities
-    std::vector<std::pair<vertex_descriptor, vertex_descriptor> > seeds;
-    for(vertex_descriptor v : singular) seeds.emplace_back(v, v);
-    label_bfs(seeds, max_nearest_singularities, (std::numeric_limits<int>::max)(), near_labels, near_count);
+    std::vector<std::pair<int, int> > seeds;
+    for(vertex_descriptor v : singular) seeds.emplace_back(index(v), index(v));
+    label_bfs<max_nearest_singularities>(seeds, (std::numeric_limits<int>::max)(), near_labels);
     // distance to the border and the features
     feature_dist.assign(by_index.size(), (std::numeric_limits<int>::max)());
-    queue.clear();
-    for(std::size_t i = 0; i < by_index.size(); ++i) if(cut[i]) { feature_dist[i] = 0; queue.push_back(by_index[i]); }
-    for(std::size_t i = 0; i < queue.size(); ++i)
+    std::vector<int> fqueue;
+    for(std::size_t i = 0; i < by_index.size(); ++i) if(cut[i]) { feature_dist[i] = 0; fqueue.push_back(int(i)); }
+    for(std::size_t i = 0; i < fqueue.size(); ++i)
     {
-      const int d = feature_dist[std::size_t(get(index_map, queue[i]))];
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(queue[i], pm), pm))
+      const int d = feature_dist[std::size_t(fqueue[i])];
+      for(int k = adjacency_begin[std::size_t(fqueue[i])]; k < adjacency_begin[std::size_t(fqueue[i]) + 1]; ++k)
       {
-        const std::size_t j = std::size_t(get(index_map, source(h, pm)));
+        const std::size_t j = std::size_t(adjacency[std::size_t(k)]);
         if(feature_dist[j] <= d + 1) continue;
         feature_dist[j] = d + 1;
-        queue.push_back(source(h, pm));
+        fqueue.push_back(int(j));
       }
     }
     // separatrices
     seeds.clear();
     trace_separatrices(singular, seeds);
-    label_bfs(seeds, 3, m_separatrix_radius, sep_labels, sep_count);
+    sep_begin.assign(by_index.size() + 1, 0);
+    for(const auto& so : seeds) ++sep_begin[std::size_t(so.first) + 1];
+    for(std::size_t i = 0; i < by_index.size(); ++i) sep_begin[i + 1] += sep_begin[i];
+    sep_owner.resize(seeds.size());
+    std::vector<int> cursor(sep_begin.begin(), sep_begin.end() - 1);
+    for(const auto& so : seeds) sep_owner[std::size_t(cursor[std::size_t(so.first)]++)] = so.second;
+    sep_near.source.resize(by_index.size() * 3);
+    sep_near.distance.resize(by_index.size() * 3);
+    sep_near.count.resize(by_index.size());
+    sep_near_known.assign(by_index.size(), 0);
+    visit.assign(by_index.size(), 0u);
+    visit_round = 0;
     return singular;
   }
 
   void clear_cache() { for(Slot& sl : slots) sl.source = GT::null_vertex(); }
-  // the radius the distance queries of the next candidates will need at most
-  void set_distance_radius_hint(int r) { m_distance_radius_hint = r; }
   /// \endcond
 
   /// the mesh.
@@ -260,11 +293,11 @@ public:
     if(i < 0) return nb;
     nb.feature_distance = feature_dist[std::size_t(i)];
     const std::size_t K = max_nearest_singularities;
-    for(std::size_t k = 0; k < near_count[std::size_t(i)]; ++k)
+    for(std::size_t k = std::size_t(i) * K; k < std::size_t(i) * K + near_labels.count[std::size_t(i)]; ++k)
     {
-      const Label& l = near_labels[std::size_t(i) * K + k];
-      if(l.source == v) continue;
-      nb.items[nb.size++] = Nearby{ l.source, defect(l.source), l.distance };
+      const int j = near_labels.source[k];
+      if(j == i) continue;
+      nb.items[nb.size++] = Nearby{ by_index[std::size_t(j)], defects[std::size_t(j)], near_labels.distance[k] };
     }
     return nb;
   }
@@ -280,7 +313,7 @@ public:
       slot = &slots[next_slot];
       next_slot = (next_slot + 1) % slots.size();
       slot->source = a;
-      slot->radius = (std::max)(max_radius, m_distance_radius_hint);
+      slot->radius = max_radius;
       ++slot->epoch;
       queue.clear();
       queue.push_back(a);
@@ -312,58 +345,108 @@ public:
   int distance_to_separatrix(vertex_descriptor v, vertex_descriptor x1, vertex_descriptor x2, int max_radius) const
   {
     const int i = index(v);
-    if(i >= 0)
-      for(std::size_t k = 0; k < sep_count[std::size_t(i)]; ++k)
-      {
-        const Label& l = sep_labels[std::size_t(i) * 3 + k];
-        if(l.source == x1 || l.source == x2) continue;
-        return l.distance <= max_radius ? l.distance : max_radius + 1;
-      }
+    if(i < 0) return max_radius + 1;
+    if(!sep_near_known[std::size_t(i)]) closest_separatrices(i);
+    for(std::size_t k = std::size_t(i) * 3; k < std::size_t(i) * 3 + sep_near.count[std::size_t(i)]; ++k)
+    {
+      const vertex_descriptor owner = by_index[std::size_t(sep_near.source[k])];
+      if(owner == x1 || owner == x2) continue;
+      const int d = sep_near.distance[k];
+      return d <= max_radius ? d : max_radius + 1;
+    }
     return max_radius + 1;
   }
 
-private:
+  /// \cond SKIP_IN_MANUAL
+  // the mesh as it was at the start of the batch, by vertex index (-1: a vertex created since)
   int index(vertex_descriptor v) const { return get(stamp, v) == epoch ? get(index_map, v) : -1; }
+  vertex_descriptor vertex(int i) const { return by_index[std::size_t(i)]; }
+  int defect_at(int i) const { return defects[std::size_t(i)]; }
+  // interior, on no constrained edge and no protected face
+  bool is_passable_at(int i) const { return passable[std::size_t(i)] != 0; }
+  int valence_at(int i) const { return adjacency_begin[std::size_t(i) + 1] - adjacency_begin[std::size_t(i)]; }
+  const int* neighbors_begin(int i) const { return adjacency.data() + adjacency_begin[std::size_t(i)]; }
+  const int* neighbors_end(int i) const { return adjacency.data() + adjacency_begin[std::size_t(i) + 1]; }
+  std::size_t number_of_vertices() const { return by_index.size(); }
+  /// \endcond
+
+private:
 
   // breadth-first search from all seeds (vertex, label) at once, level by level, in which each vertex keeps
   // the first K distinct labels that reach it (with their distances), up to `max_distance`.
-  void label_bfs(const std::vector<std::pair<vertex_descriptor, vertex_descriptor> >& seeds, std::size_t K, int max_distance,
-                 std::vector<Label>& labels, std::vector<unsigned char>& count)
+  template <std::size_t K>
+  void label_bfs(const std::vector<std::pair<int, int> >& seeds, int max_distance,
+                 Labels& labels)
   {
-    labels.assign(by_index.size() * K, Label{ GT::null_vertex(), 0 });
-    count.assign(by_index.size(), 0);
-    auto add = [&](std::size_t i, vertex_descriptor l, int d)
+    labels.source.resize(by_index.size() * K);
+    labels.distance.resize(by_index.size() * K);
+    labels.count.assign(by_index.size(), 0);
+    int* const source = labels.source.data();
+    unsigned char* const count = labels.count.data();
+    auto add = [&](std::size_t i, int l, int d)
     {
       const std::size_t c = count[i];
       if(c == K) return false;
-      for(std::size_t k = 0; k < c; ++k) if(labels[i * K + k].source == l) return false;
-      labels[i * K + c] = Label{ l, d };
+      const int* row = source + i * K;
+      for(std::size_t k = 0; k < c; ++k) if(row[k] == l) return false;
+      source[i * K + c] = l;
+      labels.distance[i * K + c] = d;
       ++count[i];
       return true;
     };
-    std::vector<std::pair<vertex_descriptor, vertex_descriptor> > frontier, next_frontier;
+    frontier.clear();
     for(const auto& s : seeds)
-    {
-      const int i = index(s.first);
-      if(i >= 0 && add(std::size_t(i), s.second, 0)) frontier.push_back(s);
-    }
+      if(add(std::size_t(s.first), s.second, 0)) frontier.push_back(s);
     for(int d = 0; !frontier.empty() && d < max_distance; ++d)
     {
       next_frontier.clear();
       for(const auto& f : frontier)
-        for(halfedge_descriptor h : halfedges_around_target(halfedge(f.first, pm), pm))
-        {
-          const vertex_descriptor u = source(h, pm);
-          if(add(std::size_t(get(index_map, u)), f.second, d + 1)) next_frontier.emplace_back(u, f.second);
-        }
+        for(const int* u = neighbors_begin(f.first); u != neighbors_end(f.first); ++u)
+          if(add(std::size_t(*u), f.second, d + 1)) next_frontier.emplace_back(*u, f.second);
       frontier.swap(next_frontier);
+    }
+  }
+
+  // the three closest distinct singularities whose separatrices pass within m_separatrix_radius edges of
+  // vertex i (breadth-first, so by increasing distance)
+  void closest_separatrices(int i) const
+  {
+    if(++visit_round == 0) { std::fill(visit.begin(), visit.end(), 0u); visit_round = 1; }
+    const std::size_t row = std::size_t(i) * 3;
+    unsigned char& count = sep_near.count[std::size_t(i)];
+    count = 0;
+    sep_near_known[std::size_t(i)] = 1;
+    local_queue.assign(1, i);
+    local_level.assign(1, 0);
+    visit[std::size_t(i)] = visit_round;
+    for(std::size_t q = 0; q < local_queue.size() && count < 3; ++q)
+    {
+      const int u = local_queue[q];
+      for(int k = sep_begin[std::size_t(u)]; k < sep_begin[std::size_t(u) + 1] && count < 3; ++k)
+      {
+        const int o = sep_owner[std::size_t(k)];
+        bool known = false;
+        for(std::size_t j = 0; j < count; ++j) known = known || sep_near.source[row + j] == o;
+        if(known) continue;
+        sep_near.source[row + count] = o;
+        sep_near.distance[row + count] = local_level[q];
+        ++count;
+      }
+      if(local_level[q] >= m_separatrix_radius) continue;
+      for(const int* w = neighbors_begin(u); w != neighbors_end(u); ++w)
+      {
+        if(visit[std::size_t(*w)] == visit_round) continue;
+        visit[std::size_t(*w)] = visit_round;
+        local_queue.push_back(*w);
+        local_level.push_back(local_level[q] + 1);
+      }
     }
   }
 
   // straight edge lines from every interior singularity, through regular interior vertices, until a
   // singular, border or feature vertex or `m_separatrix_length` edges; (vertex, owner) pairs.
   void trace_separatrices(const std::vector<vertex_descriptor>& singular,
-                          std::vector<std::pair<vertex_descriptor, vertex_descriptor> >& out) const
+                          std::vector<std::pair<int, int> >& out) const
   {
     for(vertex_descriptor s : singular)
     {
@@ -375,9 +458,9 @@ private:
         {
           const vertex_descriptor w = target(o, pm);
           if(w == s) break;
-          out.emplace_back(w, s);
+          out.emplace_back(index(w), index(s));
           const std::size_t iw = std::size_t(index(w));
-          if(defects[iw] != 0 || cut[iw] || internal::valence(w, pm) != 4) break;
+          if(defects[iw] != 0 || cut[iw] || valence_at(int(iw)) != 4) break;
           o = internal::rotate_outgoing(opposite(o, pm), 2, pm);
         }
       }

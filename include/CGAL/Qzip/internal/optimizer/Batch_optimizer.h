@@ -60,7 +60,6 @@ class Batch_optimizer
   typedef Scoring_context<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap> Context;
   typedef Quad_smoother<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap, GeomTraits> Smoother;
   typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<unsigned int> >::type Stamp_map;
-  typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<vertex_descriptor> >::type Vertex_map;
 
   struct Scored
   {
@@ -86,9 +85,11 @@ class Batch_optimizer
   CGAL::Real_timer timer;
 
   Stamp_map search_stamp, op_stamp, scar_stamp;
-  Vertex_map search_pred;
   unsigned int search_epoch = 0, batch_epoch = 0;
-  std::vector<vertex_descriptor> queue;
+  // partner search on the context's arrays
+  std::vector<unsigned int> search_visit;
+  std::vector<int> search_from, index_queue;
+  unsigned int search_round = 0;
   std::vector<vertex_descriptor> singular;
 
 public:
@@ -98,8 +99,7 @@ public:
       ctx(pm, vpm, ecm, fcm), smoother(pm, vpm, ecm, fcm, settings.smooth), rng(settings.seed),
       search_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       op_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
-      scar_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
-      search_pred(get(CGAL::dynamic_vertex_property_t<vertex_descriptor>(), pm))
+      scar_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm))
   {
     smoother.quality_floor = settings.quality_floor;
     for(vertex_descriptor v : vertices(pm))
@@ -146,21 +146,12 @@ private:
     for(std::size_t i = 0; i < vs.size(); ++i) vs[i] = keyed[i].second;
   }
 
-  // a surgery path may pass through v: interior, no constrained edge, no protected face
-  bool is_passable(vertex_descriptor v) const
-  {
-    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-    {
-      if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) return false;
-      if(!is_border(h, pm) && get(fcm, face(h, pm))) return false;
-    }
-    return true;
-  }
-
+  // v may start a surgery: interior valence 3 or 5, passable (at the start of the batch)
   bool is_endpoint(vertex_descriptor v) const
   {
-    const std::size_t d = valence(v, pm);
-    return (d == 3 || d == 5) && is_passable(v);
+    const int i = ctx.index(v);
+    const int d = ctx.valence_at(i);
+    return (d == 3 || d == 5) && ctx.is_passable_at(i);
   }
 
   // vertices within `radius` edges of `seeds` (seeds first)
@@ -193,11 +184,6 @@ private:
     return out;
   }
 
-  void mark(const std::vector<vertex_descriptor>& region)
-  {
-    for(vertex_descriptor v : region) put(op_stamp, v, batch_epoch);
-  }
-
   // the number of inverted quads (scaled Jacobian <= 0) incident to the vertices of `region`, and the
   // smallest scaled Jacobian among these quads (1 if none)
   std::pair<std::size_t, double> quality(const std::vector<vertex_descriptor>& region) const
@@ -221,56 +207,62 @@ private:
   // ---------------------------------------------------------------------------------------------
   // candidates
 
-  // breadth-first search from s through passable vertices: the closest singularities of each type
-  // that can end a surgery (`neighbors_per_type` of each), and the border/feature singularities met before.
+  // breadth-first search from s through passable vertices (on the mesh as it was at the start of the
+  // batch, by vertex index): the closest singularities of each type that can end a surgery
+  // (`neighbors_per_type` of each), and the border/feature singularities met before.
   std::vector<std::vector<vertex_descriptor> > partner_paths(vertex_descriptor s)
   {
-    ++search_epoch;
-    queue.clear();
-    queue.push_back(s);
-    put(search_stamp, s, search_epoch);
-    put(search_pred, s, s);
+    const int is = ctx.index(s);
+    if(search_visit.size() < ctx.number_of_vertices())
+    {
+      search_visit.assign(ctx.number_of_vertices(), 0u);
+      search_from.resize(ctx.number_of_vertices());
+    }
+    if(++search_round == 0) { std::fill(search_visit.begin(), search_visit.end(), 0u); search_round = 1; }
+    index_queue.clear();
+    index_queue.push_back(is);
+    search_visit[std::size_t(is)] = search_round;
+    search_from[std::size_t(is)] = is;
     std::size_t n3 = 0, n5 = 0, others = 0;
     const std::size_t k = settings.neighbors_per_type;
-    std::vector<vertex_descriptor> partners;
-    for(std::size_t i = 0; i < queue.size(); ++i)
+    std::vector<int> partners;
+    for(std::size_t i = 0; i < index_queue.size(); ++i)
     {
-      const vertex_descriptor v = queue[i];
-      bool expand = (v == s);
-      if(v != s)
+      const int v = index_queue[i];
+      bool expand = (v == is);
+      if(v != is)
       {
-        const int d = ctx.defect(v);
-        const bool passable = is_passable(v);
+        const int d = ctx.defect_at(v);
+        const bool passable = ctx.is_passable_at(v);
         expand = passable;
         if(d != 0)
         {
-          const std::size_t dv = valence(v, pm);
+          const int dv = ctx.valence_at(v);
           const bool usable = passable && (dv == 3 || dv == 5);
           if(usable && d < 0 && n3 < k) { ++n3; partners.push_back(v); }
           else if(usable && d > 0 && n5 < k) { ++n5; partners.push_back(v); }
           else if(!usable && others < 2 * k && ((d < 0 && n3 < k) || (d > 0 && n5 < k)))
-          { ++others; partners.push_back(v); } // boundary/feature defects: the primitive refuses them for now
+          { ++others; partners.push_back(v); } // boundary/feature defects
           if(n3 >= k && n5 >= k) break;
         }
       }
       if(!expand) continue;
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      for(const int* w = ctx.neighbors_begin(v); w != ctx.neighbors_end(v); ++w)
       {
-        const vertex_descriptor w = source(h, pm);
-        if(get(search_stamp, w) == search_epoch) continue;
-        put(search_stamp, w, search_epoch);
-        put(search_pred, w, v);
-        queue.push_back(w);
+        if(search_visit[std::size_t(*w)] == search_round) continue;
+        search_visit[std::size_t(*w)] = search_round;
+        search_from[std::size_t(*w)] = v;
+        index_queue.push_back(*w);
       }
     }
     std::vector<std::vector<vertex_descriptor> > paths;
-    for(vertex_descriptor t : partners)
+    for(int t : partners)
     {
       std::vector<vertex_descriptor> path;
-      for(vertex_descriptor v = t; ; v = get(search_pred, v))
+      for(int v = t; ; v = search_from[std::size_t(v)])
       {
-        path.push_back(v);
-        if(v == s) break;
+        path.push_back(ctx.vertex(v));
+        if(v == is) break;
       }
       std::reverse(path.begin(), path.end());
       paths.push_back(std::move(path));
@@ -293,9 +285,6 @@ private:
   {
     bool found = false;
     const auto paths = partner_paths(s);
-    std::size_t longest = 0;
-    for(const auto& path : paths) longest = (std::max)(longest, path.size());
-    ctx.set_distance_radius_hint(int(longest) + 3);
     for(const auto& path : paths)
     {
       const vertex_descriptor t = path.back();
@@ -334,6 +323,11 @@ private:
 
   // ---------------------------------------------------------------------------------------------
   // execution
+
+  void mark(const std::vector<vertex_descriptor>& region)
+  {
+    for(vertex_descriptor v : region) put(op_stamp, v, batch_epoch);
+  }
 
   template <typename NP>
   void execute(const Scored& cand, const NP& exec_np)
@@ -432,7 +426,10 @@ private:
     visitor.on_batch_scored(stats, chosen.size());
 
     exec_timer.start();
+    const std::size_t attempts = stats.number_of_surgeries + stats.number_of_undone_surgeries + stats.number_of_failed_surgeries;
     for(const Scored& c : chosen) execute(c, plan_np);
+    // an undone or rolled back surgery may give new descriptors to the vertices it re-created
+    const bool edited = stats.number_of_surgeries + stats.number_of_undone_surgeries + stats.number_of_failed_surgeries != attempts;
 
     // smoothing near all the scars of the batch
     if(settings.smooth && stats.surgeries_in_last_batch > 0)
@@ -445,7 +442,7 @@ private:
     exec_timer.stop();
     stats.execution_seconds += exec_timer.time();
 
-    singular = ctx.begin_batch();
+    if(edited) singular = ctx.begin_batch(); // else the mesh and the context are as they were
     const std::size_t before = stats.number_of_singularities;
     stats.number_of_singularities = singular.size();
     stats.number_of_faces = faces(pm).size();
