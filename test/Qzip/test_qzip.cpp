@@ -634,27 +634,12 @@ void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::si
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   Mesh original;
   copy_mesh(m, original);
-  std::vector<vertex_descriptor> sources, targets;
-  for(vertex_descriptor v : vertices(m))
-  {
-    if(on_border(v, m)) { if(Q::vertex_defect(v, m) == 1) targets.push_back(v); }
-    else if(valence(v, m) == 3 || valence(v, m) == 5) sources.push_back(v);
-  }
-  // pairs by position: an undo may give re-created vertices new descriptors (Polyhedron_3)
-  std::vector<std::pair<Point, Point> > pairs;
-  for(vertex_descriptor t : targets)
-    for(vertex_descriptor s : sources)
-    {
-      const auto path = Q::shortest_surgery_path(m, s, t);
-      if(path.size() >= 2 && path.size() <= max_length + 1)
-        pairs.emplace_back(get(CGAL::vertex_point, m, s), get(CGAL::vertex_point, m, t));
-    }
+  const std::vector<std::pair<Point, Point> > pairs = interior_to_border_defect_pairs(m, max_length);
   std::map<Point, vertex_descriptor> at;
   for(const auto& pair : pairs)
     for(int motion = 0; motion < 4; ++motion)
     {
-      if(at.empty())
-        for(vertex_descriptor v : vertices(m)) at[get(CGAL::vertex_point, m, v)] = v;
+      if(at.empty()) at = vertices_by_position(m);
       const auto sketch = Q::shortest_surgery_path(m, at.at(pair.first), at.at(pair.second));
       const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion));
       if(!plan.is_realizable()) { ++c.refused; continue; }

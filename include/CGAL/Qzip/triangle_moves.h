@@ -154,6 +154,18 @@ relaxed_position(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
                from.z() + (z / n - from.z()) / 3.);
 }
 
+// places the two copies of a split vertex (t and the new t2) a third of the way towards the centroids of
+// their neighbours, both computed before either moves
+template <typename PolygonMesh, typename Journal>
+void relax_split_copies(typename boost::graph_traits<PolygonMesh>::vertex_descriptor t,
+                        typename boost::graph_traits<PolygonMesh>::vertex_descriptor t2, Journal& J)
+{
+  const auto p2 = relaxed_position(t2, J.mesh(), J.vertex_point_map());
+  const auto p1 = relaxed_position(t, J.mesh(), J.vertex_point_map());
+  J.move_point(t2, p2);
+  J.move_point(t, p1);
+}
+
 } // namespace internal
 
 /*!
@@ -403,11 +415,7 @@ apply_triangle_move(typename boost::graph_traits<PolygonMesh>::halfedge_descript
       CGAL_USE(hn);
       const halfedge_descriptor t_t2 = next(wt, pm);
       J.split_face(t_t2, before_w);                                // t2->w closes (w, t, t2)
-      const vertex_descriptor t2 = target(t_t2, pm);
-      const auto p2 = relaxed_position(t2, pm, vpm);
-      const auto p1 = relaxed_position(t, pm, vpm);
-      J.move_point(t2, p2);
-      J.move_point(t, p1);
+      relax_split_copies<PolygonMesh>(t, target(t_t2, pm), J);
       return t_t2;
     }
     case Triangle_move::MIRRORED_VERTEX_TO_EDGE:
@@ -421,11 +429,7 @@ apply_triangle_move(typename boost::graph_traits<PolygonMesh>::halfedge_descript
       const halfedge_descriptor t2_t = next(xt, pm), t_w = next(t2_t, pm);
       CGAL_assertion(target(t_w, pm) == w);
       J.split_face(t_w, xt);                                       // w->t2 closes (t2, t, w)
-      const vertex_descriptor t2 = source(t2_t, pm);
-      const auto p2 = relaxed_position(t2, pm, vpm);
-      const auto p1 = relaxed_position(t, pm, vpm);
-      J.move_point(t2, p2);
-      J.move_point(t, p1);
+      relax_split_copies<PolygonMesh>(t, source(t2_t, pm), J);
       return t2_t;
     }
   }
@@ -699,11 +703,7 @@ void split_shared_tip(typename boost::graph_traits<PolygonMesh>::halfedge_descri
   const auto t = target(n, pm);
   const auto wt = halfedge(w, t, pm).first;
   const auto hn = mirrored ? J.split_vertex(n, prev(opposite(wt, pm), pm)) : J.split_vertex(wt, n); // t2->t
-  const auto t2 = source(hn, pm);
-  const auto p2 = relaxed_position(t2, pm, J.vertex_point_map());
-  const auto p1 = relaxed_position(t, pm, J.vertex_point_map());
-  J.move_point(t2, p2);
-  J.move_point(t, p1);
+  relax_split_copies<PolygonMesh>(t, source(hn, pm), J);
 }
 
 } // namespace internal

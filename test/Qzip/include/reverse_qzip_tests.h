@@ -213,6 +213,38 @@ Reverse_counters reverse_qzips_on_grids(std::size_t count, unsigned seed)
   return c;
 }
 
+/// every vertex of `m` by its position
+template <typename Mesh>
+std::map<Point, typename boost::graph_traits<Mesh>::vertex_descriptor> vertices_by_position(const Mesh& m)
+{
+  std::map<Point, typename boost::graph_traits<Mesh>::vertex_descriptor> at;
+  for(auto v : vertices(m)) at[get(CGAL::vertex_point, m, v)] = v;
+  return at;
+}
+
+/// the pairs (interior singularity, border vertex with defect +1) at most `max_length` edges apart, by
+/// position: an undo may give re-created vertices new descriptors (Polyhedron_3)
+template <typename Mesh>
+std::vector<std::pair<Point, Point> > interior_to_border_defect_pairs(const Mesh& m, std::size_t max_length)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::vector<vertex_descriptor> sources, targets;
+  for(vertex_descriptor v : vertices(m))
+  {
+    if(on_border(v, m)) { if(CGAL::Qzip::vertex_defect(v, m) == 1) targets.push_back(v); }
+    else if(valence(v, m) == 3 || valence(v, m) == 5) sources.push_back(v);
+  }
+  std::vector<std::pair<Point, Point> > pairs;
+  for(vertex_descriptor t : targets)
+    for(vertex_descriptor s : sources)
+    {
+      const auto path = CGAL::Qzip::shortest_surgery_path(m, s, t);
+      if(path.size() >= 2 && path.size() <= max_length + 1)
+        pairs.emplace_back(get(CGAL::vertex_point, m, s), get(CGAL::vertex_point, m, t));
+    }
+  return pairs;
+}
+
 /// Q-zips to border targets (a border vertex with one quad too many, see `border_endpoint_qzips()` in
 /// test_qzip.cpp): each is reversed exactly or refused up front, because it cancelled a defect or moved
 /// it along the border. Returns the counters; every Q-zip is undone by a history.
@@ -224,25 +256,11 @@ Reverse_counters reverse_border_qzips(Mesh& m, std::size_t max_length)
   Reverse_counters c;
   Mesh original;
   copy_mesh(m, original);
-  std::vector<vertex_descriptor> sources, targets;
-  for(vertex_descriptor v : vertices(m))
-  {
-    if(on_border(v, m)) { if(Q::vertex_defect(v, m) == 1) targets.push_back(v); }
-    else if(valence(v, m) == 3 || valence(v, m) == 5) sources.push_back(v);
-  }
-  std::vector<std::pair<Point, Point> > pairs; // by position: undos may re-create vertices
-  for(vertex_descriptor t : targets)
-    for(vertex_descriptor s : sources)
-    {
-      const auto path = Q::shortest_surgery_path(m, s, t);
-      if(path.size() >= 2 && path.size() <= max_length + 1)
-        pairs.emplace_back(get(CGAL::vertex_point, m, s), get(CGAL::vertex_point, m, t));
-    }
+  const std::vector<std::pair<Point, Point> > pairs = interior_to_border_defect_pairs(m, max_length);
   for(const auto& pair : pairs)
     for(int motion = 0; motion < 4; ++motion)
     {
-      std::map<Point, vertex_descriptor> at;
-      for(vertex_descriptor v : vertices(m)) at[get(CGAL::vertex_point, m, v)] = v;
+      const std::map<Point, vertex_descriptor> at = vertices_by_position(m);
       const auto sketch = Q::shortest_surgery_path(m, at.at(pair.first), at.at(pair.second));
       const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion));
       if(!plan.is_realizable()) continue;
