@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -100,9 +101,13 @@ struct Shape
   long chi = 0;
   std::map<std::size_t, std::size_t> non_quad_faces;
   std::size_t border_halfedges = 0;
+  std::size_t border_cycles = 0;
   bool operator==(const Shape& o) const
-  { return chi == o.chi && non_quad_faces == o.non_quad_faces && border_halfedges == o.border_halfedges; }
+  { return same_up_to_border_length(o) && border_halfedges == o.border_halfedges; }
   bool operator!=(const Shape& o) const { return !(*this == o); }
+  // what a Q-zip that moves a border defect keeps (it splits a border vertex: one more border edge)
+  bool same_up_to_border_length(const Shape& o) const
+  { return chi == o.chi && non_quad_faces == o.non_quad_faces && border_cycles == o.border_cycles; }
 };
 
 template <typename Mesh>
@@ -115,7 +120,15 @@ Shape shape(const Mesh& m)
     const std::size_t d = CGAL::halfedges_around_face(halfedge(f, m), m).size();
     if(d != 4) ++s.non_quad_faces[d];
   }
-  for(auto h : halfedges(m)) if(is_border(h, m)) ++s.border_halfedges;
+  std::set<typename boost::graph_traits<Mesh>::halfedge_descriptor> seen;
+  for(auto h : halfedges(m))
+  {
+    if(!is_border(h, m)) continue;
+    ++s.border_halfedges;
+    if(!seen.insert(h).second) continue;
+    ++s.border_cycles;
+    for(auto g = next(h, m); g != h; g = next(g, m)) seen.insert(g);
+  }
   return s;
 }
 
