@@ -53,7 +53,8 @@ inline bool same_file(const std::string& a, const std::string& b)
 
 /// Checks the header of an OFF or PLY file before CGAL's readers see it: the element counts it declares must
 /// fit in the file (every element takes at least one byte); in a PLY header every `property` line must
-/// follow an `element` line and vertex coordinates and normals must be `float` or `double`. CGAL 5.5's readers reserve memory for the declared counts before reading, which
+/// follow an `element` line, element counts must be non-negative integers, and vertex coordinates and normals
+/// must be `float` or `double`. CGAL 5.5's readers reserve memory for the declared counts before reading, which
 /// fails (`std::bad_alloc`, or an abort under AddressSanitizer) on absurd counts, and its PLY reader
 /// dereferences the last element of an empty list on a property without element, and a null pointer on
 /// integer coordinates (segmentation faults in Release; assertions otherwise).
@@ -87,7 +88,17 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
       {
         element_seen = true;
         element.clear();
-        if(is >> element >> count) total += (count > 0 ? count : 0);
+        if(is >> element >> count)
+        {
+          // CGAL 5.5's reader turns a negative count into a huge unsigned one and loops over it
+          if(count < 0 || count != std::floor(count))
+          {
+            error = "cannot read '" + path + "': malformed PLY header (element '" + element
+                    + "' has a count that is not a non-negative integer)";
+            return false;
+          }
+          total += count;
+        }
       }
       else if(keyword == "property" && !element_seen)
       {
