@@ -11,6 +11,7 @@
 #include <CGAL/license/Qzip.h>
 
 #include <CGAL/Qzip/internal/entity_ids.h>
+#include <CGAL/Qzip/internal/undo_groups.h>
 
 #include <CGAL/Qzip/quad_operations.h>
 
@@ -57,8 +58,7 @@ private:
 
   PolygonMesh& pm;
   VertexPointMap vpm;
-  std::vector<Entry> entries;
-  std::vector<std::size_t> marks;
+  Undo_groups<Entry> entries;
   Entity_ids<halfedge_descriptor> halfedge_ids;
   Entity_ids<vertex_descriptor> vertex_ids;
 
@@ -67,12 +67,12 @@ public:
 
   VertexPointMap vertex_point_map() const { return vpm; }
   bool empty() const { return entries.empty(); }
-  std::size_t number_of_marks() const { return marks.size(); }
+  std::size_t number_of_marks() const { return entries.number_of_marks(); }
 
   // starts a group of operations that `rollback_to_mark()` undoes as a whole
-  void mark() { marks.push_back(entries.size()); }
+  void mark() { entries.mark(); }
   // forgets the last mark, keeping its operations in the previous group
-  void drop_mark() { marks.pop_back(); }
+  void drop_mark() { entries.drop_mark(); }
 
   // collapses face(h), keeping target(h), and puts the kept vertex at the midpoint of the two merged ones.
   Split_delimiters<PolygonMesh> collapse(halfedge_descriptor h)
@@ -93,7 +93,7 @@ public:
     e.first = halfedge_ids.name(d.first);
     e.second = halfedge_ids.name(d.second);
     if(!is_border_vertex(a, pm)) put(vpm, a, CGAL::midpoint(e.moved_from, e.removed_at)); // the border keeps its shape
-    entries.push_back(e);
+    entries.push(e);
     return d;
   }
 
@@ -112,20 +112,14 @@ public:
     const vertex_descriptor c = target(next(next(q, pm), pm), pm);
     relax(c, e.moved_from);
     relax(v, e.moved_from);
-    entries.push_back(e);
+    entries.push(e);
     return q;
   }
 
   // undoes the operations since the last mark, most recent first, and removes the mark.
   void rollback_to_mark()
   {
-    const std::size_t keep = marks.empty() ? 0 : marks.back();
-    if(!marks.empty()) marks.pop_back();
-    while(entries.size() > keep)
-    {
-      undo(entries.back());
-      entries.pop_back();
-    }
+    entries.rollback_to_mark([this](const Entry& e) { undo(e); });
     if(entries.empty()) { halfedge_ids.clear(); vertex_ids.clear(); }
   }
 

@@ -11,6 +11,7 @@
 #include <CGAL/license/Qzip.h>
 
 #include <CGAL/Qzip/internal/entity_ids.h>
+#include <CGAL/Qzip/internal/undo_groups.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -70,8 +71,7 @@ private:
 
   PolygonMesh& pm;
   VertexPointMap vpm;
-  std::vector<Entry> entries;
-  std::vector<std::size_t> marks;
+  Undo_groups<Entry> entries;
   Entity_ids<halfedge_descriptor> hid;
   Entity_ids<vertex_descriptor> vid;
 
@@ -80,11 +80,11 @@ public:
 
   PolygonMesh& mesh() { return pm; }
   VertexPointMap vertex_point_map() const { return vpm; }
-  std::size_t number_of_marks() const { return marks.size(); }
+  std::size_t number_of_marks() const { return entries.number_of_marks(); }
   std::size_t number_of_entries() const { return entries.size(); }
 
-  void mark() { marks.push_back(entries.size()); }
-  void drop_mark() { CGAL_precondition(!marks.empty()); marks.pop_back(); }
+  void mark() { entries.mark(); }
+  void drop_mark() { entries.drop_mark(); }
 
   // Euler::join_face(h), journaled
   halfedge_descriptor join_face(halfedge_descriptor h)
@@ -101,7 +101,7 @@ public:
     hid.unbind(h);
     hid.unbind(o);
     e.h1 = hid.name(hp);
-    entries.push_back(e);
+    entries.push(e);
     return hp;
   }
 
@@ -113,7 +113,7 @@ public:
     const halfedge_descriptor h3 = CGAL::Euler::split_face(h1, h2, pm);
     adjust(h3);
     e.h1 = hid.name(h3);
-    entries.push_back(e);
+    entries.push(e);
     return h3;
   }
 
@@ -135,7 +135,7 @@ public:
     hid.unbind(o);
     vid.unbind(gone);
     e.h1 = hid.name(hp);
-    entries.push_back(e);
+    entries.push(e);
     return hp;
   }
 
@@ -149,7 +149,7 @@ public:
     adjust(hn);
     put(vpm, source(hn, pm), p);
     e.h1 = hid.name(hn);
-    entries.push_back(e);
+    entries.push(e);
     return hn;
   }
 
@@ -160,19 +160,13 @@ public:
     e.vertex = vid.name(v);
     e.point = get(vpm, v);
     put(vpm, v, p);
-    entries.push_back(e);
+    entries.push(e);
   }
 
   // undoes everything since the last mark (everything when there is none) and removes the mark.
   void rollback_to_mark()
   {
-    const std::size_t keep = marks.empty() ? 0 : marks.back();
-    if(!marks.empty()) marks.pop_back();
-    while(entries.size() > keep)
-    {
-      undo(entries.back());
-      entries.pop_back();
-    }
+    entries.rollback_to_mark([this](const Entry& e) { undo(e); });
     if(entries.empty()) { hid.clear(); vid.clear(); }
   }
 
