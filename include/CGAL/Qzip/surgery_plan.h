@@ -124,6 +124,18 @@ Turn compass_turn(typename boost::graph_traits<PolygonMesh>::vertex_descriptor u
   return q_right == 1 ? Turn::RIGHT : (q_right == 2 ? Turn::STRAIGHT : Turn::LEFT);
 }
 
+// the halfedge whose face a collapse tag collapses at the path edge o = v->w, keeping w (see
+// Chain_executor): RC the quad on the left of o (face(o)), LC the one on its right; its far corner
+// target(next(next(h))) is the vertex merged away
+template <typename PolygonMesh>
+typename boost::graph_traits<PolygonMesh>::halfedge_descriptor
+collapsed_quad(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor o, Strip_operation op,
+               const PolygonMesh& pm)
+{
+  CGAL_precondition(is_collapse(op));
+  return op == Strip_operation::RIGHT_COLLAPSE ? o : prev(opposite(o, pm), pm);
+}
+
 template <typename PolygonMesh>
 void transport_compass(const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& path,
                        std::vector<Strip_operation>& ops, std::size_t from, const PolygonMesh& pm)
@@ -231,9 +243,7 @@ plan_qzip(const PolygonMesh& pm,
     return internal::with_defect_parameters(pm, np, [&](const auto& vpm, const auto& ecm_, const auto& gt)
     {
       const internal::Vertex_defect_info info = internal::vertex_defect_info(v, pm, vpm, ecm_, gt);
-      std::size_t faces = 0;
-      for(auto h : halfedges_around_target(halfedge(v, pm), pm)) if(!is_border(h, pm)) ++faces;
-      return std::make_pair(info.defect, int(faces) - info.defect);
+      return std::make_pair(info.defect, info.expected_faces);
     });
   };
   const bool border_target = internal::is_border_vertex(plan.target, pm);
@@ -295,8 +305,7 @@ plan_qzip(const PolygonMesh& pm,
   for(std::size_t j = 0; j + 1 < plan.path.size(); ++j)
   {
     if(!is_collapse(plan.operations[j])) continue;
-    const auto o = halfedge(plan.path[j], plan.path[j + 1], pm).first;
-    const auto h = plan.operations[j] == Strip_operation::RIGHT_COLLAPSE ? o : prev(opposite(o, pm), pm);
+    const auto h = internal::collapsed_quad(halfedge(plan.path[j], plan.path[j + 1], pm).first, plan.operations[j], pm);
     if(is_border(h, pm)) continue;
     const vertex_descriptor far_corner = target(next(next(h, pm), pm), pm);
     if(std::find(plan.path.begin() + std::ptrdiff_t(j + 1), plan.path.end(), far_corner) != plan.path.end())

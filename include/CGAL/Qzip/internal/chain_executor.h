@@ -266,16 +266,15 @@ private:
           guide = opposite(o, pm);
           break;
         case Strip_operation::RIGHT_COLLAPSE:
-          if(is_border(o, pm) || removes_path_vertex(o) || !collapse(o))
-          { failure = Execution_failure::COLLAPSE_REFUSED; return false; }
-          guide = opposite(last_delimiters.first, pm);
-          break;
         case Strip_operation::LEFT_COLLAPSE:
-          if(is_border(opposite(o, pm), pm) || removes_path_vertex(prev(opposite(o, pm), pm)) ||
-             !collapse(prev(opposite(o, pm), pm)))
+        {
+          const halfedge_descriptor h = collapsed_quad(o, plan.operations[j], pm);
+          if(is_border(h, pm) || removes_path_vertex(h) || !collapse(h))
           { failure = Execution_failure::COLLAPSE_REFUSED; return false; }
-          guide = opposite(last_delimiters.second, pm);
+          guide = opposite(plan.operations[j] == Strip_operation::RIGHT_COLLAPSE ? last_delimiters.first
+                                                                                  : last_delimiters.second, pm);
           break;
+        }
         case Strip_operation::LEFT_SPLIT:
         case Strip_operation::RIGHT_SPLIT:
           if(guide == GT::null_halfedge() || guide == o || source(guide, pm) != P[j])
@@ -346,11 +345,11 @@ private:
   // the number of faces a border or feature vertex should have, from the geometry before the surgery
   // (frozen at the first look: the chain moves vertices, and a defect is a matter of connectivity); a
   // border vertex created by a split sits on a straight piece of border and should have two
-  int ideal_number_of_faces(vertex_descriptor v, int faces)
+  int ideal_number_of_faces(vertex_descriptor v)
   {
     auto it = ideal.find(v);
     if(it != ideal.end()) return it->second;
-    const int n = faces - vertex_defect_info(v, pm, log_vpm(), ecm, Geom_traits()).defect;
+    const int n = vertex_defect_info(v, pm, log_vpm(), ecm, Geom_traits()).expected_faces;
     ideal.emplace(v, n);
     return n;
   }
@@ -361,7 +360,7 @@ private:
   {
     if(a.border || a.on_feature)
     {
-      const int defect = a.faces - ideal_number_of_faces(v, a.faces);
+      const int defect = a.faces - ideal_number_of_faces(v);
       return defect == 0 ? 0 : 100 + defect;
     }
     return a.valence == 4 ? 0 : a.valence;

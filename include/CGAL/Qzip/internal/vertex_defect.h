@@ -31,6 +31,8 @@ struct Vertex_defect_info
   std::size_t valence = 0;
   bool on_border = false;
   int defect = 0;
+  int faces = 0;          // faces around the vertex (the valence for an interior vertex away from features)
+  int expected_faces = 4; // what a regular vertex has there: 4 inside, the sum of the sectors' ideals on a cut
 };
 
 // Angle (radians, in [0, pi]) at `target(h, pm)` between the two edges of `face(h, pm)` incident to it,
@@ -93,13 +95,15 @@ vertex_defect_info(typename boost::graph_traits<PolygonMesh>::vertex_descriptor 
 
   if(start == GT::null_halfedge())
   {
-    info.defect = static_cast<int>(info.valence) - 4;
+    info.faces = static_cast<int>(info.valence);
+    info.defect = info.faces - info.expected_faces;
     return info;
   }
 
   // Walk the fan from a cut edge; border and constrained edges cut it into sectors.
   double theta = 0;
   int q = 0;
+  info.expected_faces = 0;
   for(halfedge_descriptor h : halfedges_around_target(start, pm))
   {
     if(!is_border(h, pm))
@@ -109,11 +113,13 @@ vertex_defect_info(typename boost::graph_traits<PolygonMesh>::vertex_descriptor 
     }
     if(is_cut(next(h, pm)) && q > 0) // the sector ends at edge(next(h)); the walk ends at edge(start)
     {
-      info.defect += q - ideal_number_of_faces(theta);
+      info.faces += q;
+      info.expected_faces += ideal_number_of_faces(theta);
       theta = 0;
       q = 0;
     }
   }
+  info.defect = info.faces - info.expected_faces;
   return info;
 }
 
