@@ -643,7 +643,8 @@ void make_grid_with_border_steps(Mesh& m, unsigned seed)
 /// in the four motions: executed Q-zips keep every invariant (border defects included), a located
 /// border end lands on the plan's last vertex, and the history gives back the mesh.
 template <typename Mesh>
-void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::size_t& border_moves)
+void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::size_t& border_moves,
+                           std::map<Q::Plan_status, std::size_t>* reached_along_border = nullptr)
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   Mesh original;
@@ -652,48 +653,64 @@ void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::si
   std::map<Point, vertex_descriptor> at;
   for(const auto& pair : pairs)
     for(int motion = 0; motion < 4; ++motion)
-    {
-      if(at.empty()) at = vertices_by_position(m);
-      const auto sketch = Q::shortest_surgery_path(m, at.at(pair.first), at.at(pair.second));
-      const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion));
-      if(!plan.is_realizable()) { ++c.refused; continue; }
-      assert(on_border(plan.path.back(), m) && plan.path[plan.path.size() - 2] == sketch.back());
-      const Snapshot<Mesh> before(m);
-      Q::Qzip_history<Mesh> history(m);
-      const auto r = Q::execute_qzip(m, plan, history);
-      at.clear(); // a roll-back re-creates elements too
-      if(!r.is_done())
+      for(int side = 0; side < (reached_along_border ? 2 : 1); ++side)
       {
-        ++c.rolled_back;
-        assert(CGAL::is_valid_polygon_mesh(m) && singularity_codes(m) == before.singular);
-        continue;
+        if(at.empty()) at = vertices_by_position(m);
+        // the shortest path, or with `reached_along_border` a path that reaches the target along the
+        // border (with the mesh on its left, or on its right)
+        const auto sketch = reached_along_border
+                              ? path_along_border(m, at.at(pair.first), 12, side == 0, 8, at.at(pair.second))
+                              : Q::shortest_surgery_path(m, at.at(pair.first), at.at(pair.second));
+        if(sketch.empty()) continue;
+        const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion));
+        if(reached_along_border) ++(*reached_along_border)[plan.status];
+        if(!plan.is_realizable()) { ++c.refused; continue; }
+        assert(on_border(plan.path.back(), m) && plan.path[plan.path.size() - 2] == sketch.back());
+        const Snapshot<Mesh> before(m);
+        Q::Qzip_history<Mesh> history(m);
+        const auto r = Q::execute_qzip(m, plan, history);
+        at.clear(); // a roll-back re-creates elements too
+        if(!r.is_done())
+        {
+          ++c.rolled_back;
+          assert(CGAL::is_valid_polygon_mesh(m) && singularity_codes(m) == before.singular);
+          continue;
+        }
+        check_done(m, before, r, c);
+        if(r.moved_target != boost::graph_traits<Mesh>::null_vertex())
+        {
+          assert(r.moved_target == plan.path.back() && on_border(r.moved_target, m));
+          assert(Q::vertex_defect(r.moved_target, m) == 1);
+          ++border_moves;
+        }
+        history.undo_all();
+        assert(CGAL::is_valid_polygon_mesh(m) && are_isomorphic(m, original));
+        assert(sorted_points(m) == sorted_points(original));
       }
-      check_done(m, before, r, c);
-      if(r.moved_target != boost::graph_traits<Mesh>::null_vertex())
-      {
-        assert(r.moved_target == plan.path.back() && on_border(r.moved_target, m));
-        assert(Q::vertex_defect(r.moved_target, m) == 1);
-        ++border_moves;
-      }
-      history.undo_all();
-      assert(CGAL::is_valid_polygon_mesh(m) && are_isomorphic(m, original));
-      assert(sorted_points(m) == sorted_points(original));
-    }
 }
 
 void test_border_endpoints()
 {
   Counters grid_sm, grid_ph, real;
   std::size_t moves_sm = 0, moves_ph = 0, moves_real = 0;
+  Counters along_c;
+  std::size_t moves_along = 0;
+  std::map<Q::Plan_status, std::size_t> along;
   for(unsigned seed = 1; seed <= 4; ++seed)
   {
     Surface_mesh sm;
     make_grid_with_border_steps(sm, seed);
     border_endpoint_qzips(sm, 14, grid_sm, moves_sm);
+    border_endpoint_qzips(sm, 14, along_c, moves_along, &along);
     Polyhedron ph;
     make_grid_with_border_steps(ph, seed);
     border_endpoint_qzips(ph, 14, grid_ph, moves_ph);
   }
+  along_c.print("border end points reached along the border, planted grids, Surface_mesh");
+  std::cout << "    plans:";
+  for(const auto& kv : along) std::cout << " " << kv.second << " (" << Q::describe(kv.first) << ")";
+  std::cout << "; border defects moved: " << moves_along << std::endl;
+  assert(along_c.rolled_back == 0); // refused up front (no rule for this arrival yet), never half-done
   grid_sm.print("border end points, planted grids, Surface_mesh");
   grid_ph.print("border end points, planted grids, Polyhedron_3");
   assert(grid_sm.done == grid_ph.done && moves_sm == moves_ph);

@@ -273,10 +273,12 @@ copy_mesh_with_map(const Mesh& src, Mesh& dst)
 /// the left of the path, or on its right), then the shortest path through regular interior vertices to
 /// the nearest interior singular vertex (valence other than 4) other than `s`. Each search goes at most
 /// `radius` edges. Empty when there is no such simple path.
+/// With `target` a border vertex, the walk along the border stops there instead (at most `steps` edges).
 template <typename Mesh>
 std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>
 path_along_border(const Mesh& m, typename boost::graph_traits<Mesh>::vertex_descriptor s, int steps,
-                  bool mesh_on_left, int radius)
+                  bool mesh_on_left, int radius,
+                  typename boost::graph_traits<Mesh>::vertex_descriptor target = boost::graph_traits<Mesh>::null_vertex())
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   std::vector<vertex_descriptor> path;
@@ -320,7 +322,9 @@ path_along_border(const Mesh& m, typename boost::graph_traits<Mesh>::vertex_desc
       if(is_border(mesh_on_left ? h : opposite(h, m), m)) w = source(h, m);
     if(w == boost::graph_traits<Mesh>::null_vertex() || std::find(path.begin(), path.end(), w) != path.end()) return {};
     path.push_back(w);
+    if(w == target) return path;
   }
+  if(target != boost::graph_traits<Mesh>::null_vertex()) return {};
   if(!extend(path.back(), [&](vertex_descriptor v) { return v != s && !on_border(v, m) && valence(v, m) != 4; }))
     return {};
   return path;
