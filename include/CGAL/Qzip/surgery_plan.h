@@ -190,10 +190,12 @@ the pair).
 The compass is parallel-transported along the path (paper, Sec. 2.5): straight keeps the tag, a left
 (right) turn takes the next counterclockwise (clockwise) tag, and at an irregular vertex the turn is
 decided by the number of quads on the left of the path (after LS or RC) or on its right (after RS or LC):
-one is a turn towards that side, two is straight, three or more a turn away. The ends are then
-prepared within the one-rings of the two singularities (Sec. 2.6; for a border target, see the user
-manual, "Border End Points"), folds created by the preparation are removed, and the plan is checked
-against the border, constrained edges and protected faces.
+one is a turn towards that side, two is straight, three or more a turn away; at a path vertex on the
+border the quads are counted on the side of the mesh (the inner vertices of `sketch` may lie on the
+border: see the user manual, "Paths Along the Border"). The ends are then prepared within the one-rings
+of the two singularities (Sec. 2.6; for a border target, see the user manual, "Border End Points"), folds
+created by the preparation are removed, and the plan is checked against the border (no collapse on the
+side of the border), constrained edges and protected faces.
 The mesh is not modified.
 
 \tparam PolygonMesh a model of `FaceGraph`
