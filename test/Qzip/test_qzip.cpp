@@ -644,12 +644,12 @@ void make_grid_with_border_steps(Mesh& m, unsigned seed)
 /// border end lands on the plan's last vertex, and the history gives back the mesh.
 template <typename Mesh>
 void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::size_t& border_moves,
-                           std::map<Q::Plan_status, std::size_t>* reached_along_border = nullptr)
+                           std::map<Q::Plan_status, std::size_t>* reached_along_border = nullptr, int target_defect = 1)
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   Mesh original;
   copy_mesh(m, original);
-  const std::vector<std::pair<Point, Point> > pairs = interior_to_border_defect_pairs(m, max_length);
+  const std::vector<std::pair<Point, Point> > pairs = interior_to_border_defect_pairs(m, max_length, target_defect);
   std::map<Point, vertex_descriptor> at;
   for(const auto& pair : pairs)
     for(int motion = 0; motion < 4; ++motion)
@@ -665,7 +665,7 @@ void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::si
         const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion));
         if(reached_along_border) ++(*reached_along_border)[plan.status];
         if(!plan.is_realizable()) { ++c.refused; continue; }
-        assert(on_border(plan.path.back(), m) && plan.path[plan.path.size() - 2] == sketch.back());
+        assert(on_border(plan.path.back(), m) && plan.path[plan.path.size() - (target_defect == 1 ? 2 : 1)] == sketch.back());
         const Snapshot<Mesh> before(m);
         Q::Qzip_history<Mesh> history(m);
         const auto r = Q::execute_qzip(m, plan, history);
@@ -679,8 +679,12 @@ void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::si
         check_done(m, before, r, c);
         if(r.moved_target != boost::graph_traits<Mesh>::null_vertex())
         {
-          assert(r.moved_target == plan.path.back() && on_border(r.moved_target, m));
-          assert(Q::vertex_defect(r.moved_target, m) == 1);
+          // +1: the defect moved to the appended border neighbour e; -1: t is regular now and the defect
+          // moved to one of its neighbours (the last guide's target, E1)
+          assert(on_border(r.moved_target, m));
+          assert(target_defect == 1 ? r.moved_target == plan.path.back()
+                                    : halfedge(r.moved_target, plan.path.back(), m).second);
+          assert(Q::vertex_defect(r.moved_target, m) == target_defect);
           ++border_moves;
         }
         history.undo_all();
@@ -693,7 +697,9 @@ void test_border_endpoints()
 {
   Counters grid_sm, grid_ph, real;
   std::size_t moves_sm = 0, moves_ph = 0, moves_real = 0;
-  Counters along_c, along_real;
+  Counters along_c, along_real, minus_c;
+  std::size_t moves_minus = 0;
+  std::map<Q::Plan_status, std::size_t> minus;
   std::size_t moves_along = 0, moves_along_real = 0;
   std::map<Q::Plan_status, std::size_t> along, along_real_plans;
   for(unsigned seed = 1; seed <= 4; ++seed)
@@ -702,6 +708,7 @@ void test_border_endpoints()
     make_grid_with_border_steps(sm, seed);
     border_endpoint_qzips(sm, 14, grid_sm, moves_sm);
     border_endpoint_qzips(sm, 14, along_c, moves_along, &along);
+    border_endpoint_qzips(sm, 14, minus_c, moves_minus, &minus, -1);
     Polyhedron ph;
     make_grid_with_border_steps(ph, seed);
     border_endpoint_qzips(ph, 14, grid_ph, moves_ph);
@@ -722,8 +729,14 @@ void test_border_endpoints()
     assert(ok);
     border_endpoint_qzips(m, 10, real, moves_real);
     border_endpoint_qzips(m, 10, along_real, moves_along_real, &along_real_plans);
+    border_endpoint_qzips(m, 10, minus_c, moves_minus, &minus, -1);
   }
   along_real.print("border end points reached along the border, bundled meshes with borders");
+  minus_c.print("border end points with one quad too few, reached along the border, grids and bundled meshes");
+  std::cout << "    plans:";
+  for(const auto& kv : minus) std::cout << " " << kv.second << " (" << Q::describe(kv.first) << ")";
+  std::cout << "; border defects moved: " << moves_minus << std::endl;
+  assert(moves_minus > 0);
   std::cout << "    plans:";
   for(const auto& kv : along_real_plans) std::cout << " " << kv.second << " (" << Q::describe(kv.first) << ")";
   std::cout << "; border defects moved: " << moves_along_real << std::endl;

@@ -184,8 +184,8 @@ bool is_simple_edge_path(const std::vector<typename boost::graph_traits<PolygonM
 plans a Q-zip along `sketch`, a simple edge path from the initial singularity `sketch.front()` (an
 interior vertex of valence 3 or 5) to the terminal singularity `sketch.back()` (the same, or a border
 vertex with one quad too many on a straight piece of border, whose defect then moves by one border
-edge), with `initial_operation` as the compass at the initial singularity (one of the four motions of
-the pair).
+edge, or with one quad too few, reached along the border), with `initial_operation` as the compass at
+the initial singularity (one of the four motions of the pair).
 
 The compass is parallel-transported along the path (paper, Sec. 2.5): straight keeps the tag, a left
 (right) turn takes the next counterclockwise (clockwise) tag, and at an irregular vertex the turn is
@@ -263,7 +263,9 @@ plan_qzip(const PolygonMesh& pm,
     });
   };
   const bool border_target = internal::is_border_vertex(plan.target, pm);
-  const bool target_supported = border_target ? defect_and_expected_faces(plan.target) == std::make_pair(1, 2)
+  const std::pair<int, int> target_defect = border_target ? defect_and_expected_faces(plan.target) : std::make_pair(0, 0);
+  const bool quad_too_few = target_defect == std::make_pair(-1, 2);
+  const bool target_supported = border_target ? (target_defect == std::make_pair(1, 2) || quad_too_few)
                                               : (plan.target_valence == 3 || plan.target_valence == 5);
   if(!target_supported) { plan.status = Plan_status::UNSUPPORTED_ENDPOINT; return plan; }
 
@@ -287,13 +289,13 @@ plan_qzip(const PolygonMesh& pm,
     internal::transport_compass(plan.path, plan.operations, (std::min)(retransport_from, first_fold + 1), pm);
   const Strip_operation start_tag = plan.operations[0];
   if(st == Plan_status::REALIZABLE)
-    st = border_target ? prep.prepare_border_end(plan.path, plan.operations)
+    st = border_target ? prep.prepare_border_end(plan.path, plan.operations, quad_too_few)
                        : prep.prepare_end(plan.path, plan.operations, initial_operation, transport);
   if(st == Plan_status::REALIZABLE && plan.path[0] == plan.source && plan.operations[0] != start_tag &&
      is_split(plan.operations[0]))
     st = prep.prepare_start(plan.path, plan.operations, retransport_from);
   if(st == Plan_status::REALIZABLE) st = prep.remove_folds(plan.path, plan.operations, first_fold);
-  if(st == Plan_status::REALIZABLE && border_target)
+  if(st == Plan_status::REALIZABLE && border_target && !quad_too_few)
   {
     const std::pair<int, int> e = defect_and_expected_faces(plan.path.back()); // regular, or one quad short: cancels
     if(e.second != 2 || (e.first != 0 && e.first != -1)) st = Plan_status::ENDPOINT_ADJUSTMENT;

@@ -118,13 +118,25 @@ public:
   // other border neighbour e of t, and only after the split that inserts its strip on the side of the
   // mesh (LS with the mesh on the left of u->t, RS with it on the right): t gets the same split, which
   // hands the defect to e. After the other tags no continuation moved the defect (enumerated likewise).
-  Plan_status prepare_border_end(Path& path, Operations& ops) const
+  //
+  // A border end t with one quad too few (defect -1, a single quad) is reached along the border only;
+  // the path ends there, as at an interior v3 (E1), after the split that inserts its strip on the side
+  // of the border (RS with the mesh on the left of u->t, LS with it on the right). Found by enumeration
+  // too: after the two collapses the chain often fails, after the other split it mostly does.
+  Plan_status prepare_border_end(Path& path, Operations& ops, bool quad_too_few) const
   {
     const std::size_t n = path.size();
     const vertex_descriptor t = path[n - 1], u = path[n - 2];
     const Strip_operation last = ops[n - 2];
     if(last == Strip_operation::NO_OPERATION) return Plan_status::ENDPOINT_ADJUSTMENT;
     const halfedge_descriptor ut = out(u, t);
+    if(quad_too_few)
+    {
+      if(!is_border_edge(ut, pm)) return Plan_status::ENDPOINT_ADJUSTMENT;
+      const bool mesh_on_left = !is_border(ut, pm);
+      return last == (mesh_on_left ? Strip_operation::RIGHT_SPLIT : Strip_operation::LEFT_SPLIT)
+               ? Plan_status::REALIZABLE : Plan_status::ENDPOINT_ADJUSTMENT;
+    }
     if(is_border_edge(ut, pm))
     {
       const bool mesh_on_left = !is_border(ut, pm);
