@@ -664,6 +664,11 @@ void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::si
         if(sketch.empty()) continue;
         const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion));
         if(reached_along_border) ++(*reached_along_border)[plan.status];
+        // from the border defect: the plan of the reversed sketch, whose chain starts inside
+        const auto from_border = Q::plan_qzip(m, std::vector<vertex_descriptor>(sketch.rbegin(), sketch.rend()),
+                                              Q::Strip_operation(motion));
+        assert(from_border.status == plan.status && from_border.source == sketch.front() &&
+               from_border.path == plan.path && from_border.operations == plan.operations);
         if(!plan.is_realizable()) { ++c.refused; continue; }
         assert(on_border(plan.path.back(), m) && plan.path[plan.path.size() - (target_defect == 1 ? 2 : 1)] == sketch.back());
         const Snapshot<Mesh> before(m);

@@ -185,7 +185,9 @@ plans a Q-zip along `sketch`, a simple edge path from the initial singularity `s
 interior vertex of valence 3 or 5) to the terminal singularity `sketch.back()` (the same, or a border
 vertex with one quad too many on a straight piece of border, whose defect then moves by one border
 edge, or with one quad too few, reached along the border), with `initial_operation` as the compass at
-the initial singularity (one of the four motions of the pair).
+the initial singularity (one of the four motions of the pair). When `sketch.front()` is such a border
+vertex and `sketch.back()` an interior one, the plan is that of the reversed sketch: the chain starts at
+the interior singularity (`plan.source == sketch.back()`), and `initial_operation` is the compass there.
 
 The compass is parallel-transported along the path (paper, Sec. 2.5): straight keeps the tag, a left
 (right) turn takes the next counterclockwise (clockwise) tag, and at an irregular vertex the turn is
@@ -245,6 +247,10 @@ plan_qzip(const PolygonMesh& pm,
   plan.sketch = sketch;
   plan.initial_operation = initial_operation;
   if(!internal::is_simple_edge_path(sketch, pm)) { plan.status = Plan_status::INVALID_PATH; return plan; }
+  // a border source: the chain starts inside, so this is the plan of the reversed sketch, and
+  // `initial_operation` is the compass at its start, the interior singularity sketch.back()
+  if(internal::is_border_vertex(sketch.front(), pm) && !internal::is_border_vertex(sketch.back(), pm))
+    return plan_qzip(pm, std::vector<vertex_descriptor>(sketch.rbegin(), sketch.rend()), initial_operation, np);
   plan.source = sketch.front();
   plan.target = sketch.back();
   plan.source_valence = int(internal::valence(plan.source, pm));
