@@ -1,6 +1,7 @@
 // Stress run of the Q-zip primitive: on each mesh, COUNT random Q-zips (random pair of singularities, random
-// motion; one in four targets a border defect +1 when the mesh has one), with random undos and a full
-// unwind whenever DEPTH Q-zips are stacked, all checked:
+// motion; one in four targets a border defect +1 when the mesh has one, and one in four follows a path that
+// runs along the border when the mesh has one, see qzip_test::path_along_border()), with random undos and a
+// full unwind whenever DEPTH Q-zips are stacked, all checked:
 //  * a refused Q-zip leaves the mesh exactly as it was (geometry hash over faces and points);
 //  * a done Q-zip leaves a valid polygon mesh with the same Euler characteristic, non-quad faces and border
 //    (a Q-zip to a border defect may lengthen its border cycle by one edge, never change the cycles);
@@ -15,6 +16,7 @@
 // Exit code 1 if any violation was found.
 #include "../../examples/Qzip/qzip_example_io.h"
 #include "qzip_robustness_utils.h"
+#include "qzip_test_utils.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -53,7 +55,7 @@ struct Stats
 {
   std::string name;
   std::size_t vertices = 0, faces = 0, singular = 0;
-  long tried = 0, done = 0, done_to_border = 0, refused_plan = 0, refused_execution = 0, undone = 0, violations = 0;
+  long tried = 0, done = 0, done_to_border = 0, done_along_border = 0, refused_plan = 0, refused_execution = 0, undone = 0, violations = 0;
   double seconds = 0;
   long rss_kb = 0;
   std::string status;
@@ -153,7 +155,8 @@ Stats stress(const std::string& file, long count, unsigned seed, std::size_t dep
       ++st.tried;
       const vertex_descriptor s = sing[rng() % sing.size()];
       vertex_descriptor t = sing[rng() % sing.size()];
-      if(rng() % 4 == 0)
+      const unsigned kind = unsigned(rng() % 4); // 0: to a border defect, 1: along the border, else inside
+      if(kind == 0)
       {
         std::vector<vertex_descriptor> border_defects;
         for(vertex_descriptor v : vertices(mesh))
@@ -161,8 +164,16 @@ Stats stress(const std::string& file, long count, unsigned seed, std::size_t dep
         if(!border_defects.empty()) t = border_defects[rng() % border_defects.size()];
       }
       const Q::Strip_operation op = Q::Strip_operation(rng() % 4);
-      if(s == t) { ++st.refused_plan; continue; }
-      const auto path = Q::shortest_surgery_path(mesh, s, t);
+      std::vector<vertex_descriptor> path;
+      if(kind == 1 && shape0.border_halfedges > 0)
+      {
+        const int steps = 1 + int(rng() % 6);
+        path = qzip_test::path_along_border(mesh, s, steps, rng() % 2 == 0, 8);
+      }
+      const bool along_border = !path.empty();
+      if(along_border) t = path.back();
+      else if(s == t) { ++st.refused_plan; continue; }
+      else path = Q::shortest_surgery_path(mesh, s, t);
       if(path.empty()) { ++st.refused_plan; continue; }
       const Q::Surgery_plan<Mesh> plan = Q::plan_qzip(mesh, path, op);
       if(!plan.is_realizable()) { ++st.refused_plan; continue; }
@@ -191,6 +202,7 @@ Stats stress(const std::string& file, long count, unsigned seed, std::size_t dep
          added > (border_target ? 1u : 0u))
         violation("a Q-zip changed the Euler characteristic, a non-quad face or the border");
       if(border_target) ++st.done_to_border;
+      if(along_border) ++st.done_along_border;
       border_lengths.push_back(now.border_halfedges);
       if(rng() % 3 == 0) undo_last();
       if(stacked.size() >= depth)
@@ -265,9 +277,9 @@ int main(int argc, char** argv)
 
   std::cout << "stress_qzip: " << files.size() << " files, " << count << " random Q-zips per mesh, seed " << seed << ", unwind depth " << depth
             << ", validity check every " << check_every << " done Q-zip(s)\n\n"
-            << "| mesh | V | F | singular | tried | done | done to a border defect | refused (plan) | refused (execution) | undone | violations | time (s) | RSS after (MiB) | status |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|" << std::endl;
-  long files_tried = 0, loaded = 0, tried = 0, done = 0, done_to_border = 0, refused = 0, undone = 0, violations = 0;
+            << "| mesh | V | F | singular | tried | done | done to a border defect | done along the border | refused (plan) | refused (execution) | undone | violations | time (s) | RSS after (MiB) | status |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|" << std::endl;
+  long files_tried = 0, loaded = 0, tried = 0, done = 0, done_to_border = 0, done_along_border = 0, refused = 0, undone = 0, violations = 0;
   std::vector<std::string> refused_names;
   double seconds = 0;
   for(const std::string& f : files)
@@ -276,11 +288,11 @@ int main(int argc, char** argv)
     const Stats s = stress(f, count, unsigned(seed), std::size_t(depth), check_every);
     if(s.vertices == 0) { refused_names.push_back(s.name); continue; }
     ++loaded;
-    tried += s.tried; done += s.done; done_to_border += s.done_to_border; refused += s.refused_plan + s.refused_execution; undone += s.undone;
+    tried += s.tried; done += s.done; done_to_border += s.done_to_border; done_along_border += s.done_along_border; refused += s.refused_plan + s.refused_execution; undone += s.undone;
     violations += s.violations;
     seconds += s.seconds;
     std::cout << "| " << s.name << " | " << s.vertices << " | " << s.faces << " | " << s.singular << " | " << s.tried
-              << " | " << s.done << " | " << s.done_to_border << " | " << s.refused_plan << " | " << s.refused_execution << " | " << s.undone << " | "
+              << " | " << s.done << " | " << s.done_to_border << " | " << s.done_along_border << " | " << s.refused_plan << " | " << s.refused_execution << " | " << s.undone << " | "
               << s.violations << " | " << std::fixed << std::setprecision(1) << s.seconds << " | "
               << std::setprecision(1) << double(s.rss_kb) / 1024. << " | " << s.status << " |" << std::endl;
   }
@@ -291,7 +303,8 @@ int main(int argc, char** argv)
     std::cout << std::endl;
   }
   std::cout << "\nfiles tried " << files_tried << ", meshes stressed " << loaded << ", Q-zips tried " << tried
-            << ", done " << done << " (" << done_to_border << " to a border defect), refused " << refused << ", undone " << undone << ", invariant violations "
+            << ", done " << done << " (" << done_to_border << " to a border defect, " << done_along_border
+            << " along the border), refused " << refused << ", undone " << undone << ", invariant violations "
             << violations << ", crashes 0; " << std::setprecision(1) << seconds << " s; peak RSS "
             << double(peak_rss_kb()) / 1024. << " MiB" << std::endl;
   return violations == 0 ? EXIT_SUCCESS : EXIT_FAILURE;

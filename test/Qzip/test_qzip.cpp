@@ -8,6 +8,7 @@
 
 #include <CGAL/Random.h>
 
+#include <array>
 #include <deque>
 #include <set>
 
@@ -23,28 +24,43 @@ std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> singular_vert
   return out;
 }
 
-/// the number of faces each border vertex should have, from the geometry (sector rule of vertex_defect())
+/// the number of faces each border vertex should have, from the geometry (sector rule of vertex_defect()),
+/// by vertex and by position: a border vertex that a Q-zip created, or an interior vertex that took the
+/// place of a border vertex, should have the number of the border vertex it replaced, the one nearest to it
 template <typename Mesh>
-std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, int> expected_border_faces(const Mesh& m)
+struct Border_faces
 {
-  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, int> out;
-  for(auto v : vertices(m))
+  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, int> by_vertex;
+  std::vector<std::pair<Point, int> > by_position;
+
+  explicit Border_faces(const Mesh& m)
   {
-    if(!on_border(v, m)) continue;
-    int faces = 0;
-    for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) if(!is_border(h, m)) ++faces;
-    out[v] = faces - Q::vertex_defect(v, m);
+    for(auto v : vertices(m))
+    {
+      if(!on_border(v, m)) continue;
+      int faces = 0;
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) if(!is_border(h, m)) ++faces;
+      by_vertex[v] = faces - Q::vertex_defect(v, m);
+      by_position.emplace_back(get(CGAL::vertex_point, m, v), by_vertex[v]);
+    }
   }
-  return out;
-}
+  int expected(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& m) const
+  {
+    const auto it = by_vertex.find(v);
+    if(it != by_vertex.end()) return it->second;
+    const Point& p = get(CGAL::vertex_point, m, v);
+    const auto nearest = std::min_element(by_position.begin(), by_position.end(), [&p](const auto& a, const auto& b)
+                                          { return CGAL::squared_distance(a.first, p) < CGAL::squared_distance(b.first, p); });
+    return nearest->second;
+  }
+};
 
 /// what a vertex is as a singularity: 0 if regular, its valence inside, 100 + its defect on the border.
 /// Border defects count faces against `expected` (from the geometry before a Q-zip: the chain places its
-/// vertices roughly, which may shift corner angles; a border vertex the Q-zip created sits on a straight
-/// piece of border and should have two faces), or against the geometry when `expected` is null.
+/// vertices roughly, which may shift corner angles), or against the geometry when `expected` is null.
 template <typename Mesh>
 int singularity_code(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& m,
-                     const std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, int>* expected = nullptr)
+                     const Border_faces<Mesh>* expected = nullptr)
 {
   if(!on_border(v, m)) return valence(v, m) == 4 ? 0 : valence(v, m);
   int d = 0;
@@ -52,15 +68,13 @@ int singularity_code(typename boost::graph_traits<Mesh>::vertex_descriptor v, co
   else
   {
     for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) if(!is_border(h, m)) ++d;
-    const auto it = expected->find(v);
-    d -= it == expected->end() ? 2 : it->second;
+    d -= expected->expected(v, m);
   }
   return d == 0 ? 0 : 100 + d;
 }
 
 template <typename Mesh>
-std::vector<int> singularity_codes(const Mesh& m,
-                                   const std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, int>* expected = nullptr)
+std::vector<int> singularity_codes(const Mesh& m, const Border_faces<Mesh>* expected = nullptr)
 {
   std::vector<int> out;
   for(auto v : vertices(m)) if(const int c = singularity_code(v, m, expected)) out.push_back(c);
@@ -84,10 +98,10 @@ struct Snapshot
   long chi;
   std::size_t faces, quads;
   std::vector<int> singular; // singularity_codes(): interior valences and border defects
-  std::map<typename boost::graph_traits<Mesh>::vertex_descriptor, int> border_faces; // expected_border_faces()
+  Border_faces<Mesh> border_faces;
   explicit Snapshot(const Mesh& m)
     : chi(euler_characteristic(m)), faces(CGAL::faces(m).size()), quads(0), singular(singularity_codes(m)),
-      border_faces(expected_border_faces(m))
+      border_faces(m)
   {
     for(auto f : CGAL::faces(m)) if(CGAL::halfedges_around_face(halfedge(f, m), m).size() == 4) ++quads;
   }
@@ -629,57 +643,86 @@ void make_grid_with_border_steps(Mesh& m, unsigned seed)
 /// in the four motions: executed Q-zips keep every invariant (border defects included), a located
 /// border end lands on the plan's last vertex, and the history gives back the mesh.
 template <typename Mesh>
-void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::size_t& border_moves)
+void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::size_t& border_moves,
+                           std::map<Q::Plan_status, std::size_t>* reached_along_border = nullptr, int target_defect = 1)
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   Mesh original;
   copy_mesh(m, original);
-  const std::vector<std::pair<Point, Point> > pairs = interior_to_border_defect_pairs(m, max_length);
+  const std::vector<std::pair<Point, Point> > pairs = interior_to_border_defect_pairs(m, max_length, target_defect);
   std::map<Point, vertex_descriptor> at;
   for(const auto& pair : pairs)
     for(int motion = 0; motion < 4; ++motion)
-    {
-      if(at.empty()) at = vertices_by_position(m);
-      const auto sketch = Q::shortest_surgery_path(m, at.at(pair.first), at.at(pair.second));
-      const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion));
-      if(!plan.is_realizable()) { ++c.refused; continue; }
-      assert(on_border(plan.path.back(), m) && plan.path[plan.path.size() - 2] == sketch.back());
-      const Snapshot<Mesh> before(m);
-      Q::Qzip_history<Mesh> history(m);
-      const auto r = Q::execute_qzip(m, plan, history);
-      at.clear(); // a roll-back re-creates elements too
-      if(!r.is_done())
+      for(int side = 0; side < (reached_along_border ? 2 : 1); ++side)
       {
-        ++c.rolled_back;
-        assert(CGAL::is_valid_polygon_mesh(m) && singularity_codes(m) == before.singular);
-        continue;
+        if(at.empty()) at = vertices_by_position(m);
+        // the shortest path, or with `reached_along_border` a path that reaches the target along the
+        // border (with the mesh on its left, or on its right)
+        const auto sketch = reached_along_border
+                              ? path_along_border(m, at.at(pair.first), 12, side == 0, 8, at.at(pair.second))
+                              : Q::shortest_surgery_path(m, at.at(pair.first), at.at(pair.second));
+        if(sketch.empty()) continue;
+        const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion));
+        if(reached_along_border) ++(*reached_along_border)[plan.status];
+        // from the border defect: the plan of the reversed sketch, whose chain starts inside
+        const auto from_border = Q::plan_qzip(m, std::vector<vertex_descriptor>(sketch.rbegin(), sketch.rend()),
+                                              Q::Strip_operation(motion));
+        assert(from_border.status == plan.status && from_border.source == sketch.front() &&
+               from_border.path == plan.path && from_border.operations == plan.operations);
+        if(!plan.is_realizable()) { ++c.refused; continue; }
+        assert(on_border(plan.path.back(), m) && plan.path[plan.path.size() - (target_defect == 1 ? 2 : 1)] == sketch.back());
+        const Snapshot<Mesh> before(m);
+        Q::Qzip_history<Mesh> history(m);
+        const auto r = Q::execute_qzip(m, plan, history);
+        at.clear(); // a roll-back re-creates elements too
+        if(!r.is_done())
+        {
+          ++c.rolled_back;
+          assert(CGAL::is_valid_polygon_mesh(m) && singularity_codes(m) == before.singular);
+          continue;
+        }
+        check_done(m, before, r, c);
+        if(r.moved_target != boost::graph_traits<Mesh>::null_vertex())
+        {
+          // +1: the defect moved to the appended border neighbour e; -1: t is regular now and the defect
+          // moved to one of its neighbours (the last guide's target, E1)
+          assert(on_border(r.moved_target, m));
+          assert(target_defect == 1 ? r.moved_target == plan.path.back()
+                                    : halfedge(r.moved_target, plan.path.back(), m).second);
+          assert(Q::vertex_defect(r.moved_target, m) == target_defect);
+          ++border_moves;
+        }
+        history.undo_all();
+        assert(CGAL::is_valid_polygon_mesh(m) && are_isomorphic(m, original));
+        assert(sorted_points(m) == sorted_points(original));
       }
-      check_done(m, before, r, c);
-      if(r.moved_target != boost::graph_traits<Mesh>::null_vertex())
-      {
-        assert(r.moved_target == plan.path.back() && on_border(r.moved_target, m));
-        assert(Q::vertex_defect(r.moved_target, m) == 1);
-        ++border_moves;
-      }
-      history.undo_all();
-      assert(CGAL::is_valid_polygon_mesh(m) && are_isomorphic(m, original));
-      assert(sorted_points(m) == sorted_points(original));
-    }
 }
 
 void test_border_endpoints()
 {
   Counters grid_sm, grid_ph, real;
   std::size_t moves_sm = 0, moves_ph = 0, moves_real = 0;
+  Counters along_c, along_real, minus_c;
+  std::size_t moves_minus = 0;
+  std::map<Q::Plan_status, std::size_t> minus;
+  std::size_t moves_along = 0, moves_along_real = 0;
+  std::map<Q::Plan_status, std::size_t> along, along_real_plans;
   for(unsigned seed = 1; seed <= 4; ++seed)
   {
     Surface_mesh sm;
     make_grid_with_border_steps(sm, seed);
     border_endpoint_qzips(sm, 14, grid_sm, moves_sm);
+    border_endpoint_qzips(sm, 14, along_c, moves_along, &along);
+    border_endpoint_qzips(sm, 14, minus_c, moves_minus, &minus, -1);
     Polyhedron ph;
     make_grid_with_border_steps(ph, seed);
     border_endpoint_qzips(ph, 14, grid_ph, moves_ph);
   }
+  along_c.print("border end points reached along the border, planted grids, Surface_mesh");
+  std::cout << "    plans:";
+  for(const auto& kv : along) std::cout << " " << kv.second << " (" << Q::describe(kv.first) << ")";
+  std::cout << "; border defects moved: " << moves_along << std::endl;
+  assert(moves_along > 0);
   grid_sm.print("border end points, planted grids, Surface_mesh");
   grid_ph.print("border end points, planted grids, Polyhedron_3");
   assert(grid_sm.done == grid_ph.done && moves_sm == moves_ph);
@@ -690,11 +733,293 @@ void test_border_endpoints()
     const bool ok = read_mesh(f, m);
     assert(ok);
     border_endpoint_qzips(m, 10, real, moves_real);
+    border_endpoint_qzips(m, 10, along_real, moves_along_real, &along_real_plans);
+    border_endpoint_qzips(m, 10, minus_c, moves_minus, &minus, -1);
   }
+  along_real.print("border end points reached along the border, bundled meshes with borders");
+  minus_c.print("border end points with one quad too few, reached along the border, grids and bundled meshes");
+  std::cout << "    plans:";
+  for(const auto& kv : minus) std::cout << " " << kv.second << " (" << Q::describe(kv.first) << ")";
+  std::cout << "; border defects moved: " << moves_minus << std::endl;
+  assert(moves_minus > 0);
+  std::cout << "    plans:";
+  for(const auto& kv : along_real_plans) std::cout << " " << kv.second << " (" << Q::describe(kv.first) << ")";
+  std::cout << "; border defects moved: " << moves_along_real << std::endl;
   real.print("border end points, bundled meshes with borders");
   assert(moves_real > 0);
   std::cout << "  border defects moved by one edge: " << moves_sm << " + " << moves_ph << " (grids), "
             << moves_real << " (bundled meshes)" << std::endl;
+}
+
+
+// ---------------------------------------------------------------------------------------------
+// Paths along the border: inner path vertices on the border
+
+/// how the border-path Q-zips went: done, or the plan status that refused them
+struct Border_path_counters
+{
+  Counters c;
+  std::map<Q::Plan_status, std::size_t> refused;
+  std::map<Q::Reverse_qzip_status, std::size_t> no_reverse;
+  std::map<Q::Execution_failure, std::size_t> failures;
+  std::size_t plans = 0, halfedge_form = 0, reversed = 0;
+  std::size_t no_reverse_count(Q::Reverse_qzip_status st) const
+  { const auto it = no_reverse.find(st); return it == no_reverse.end() ? 0 : it->second; }
+  void print(const char* what) const
+  {
+    std::cout << "  " << what << ": " << plans << " plans, " << c.done << " done (" << c.cancelling
+              << " cancelling singularities), " << c.rolled_back << " rolled back (";
+    for(const auto& kv : failures) std::cout << kv.second << ": " << Q::describe(kv.first) << "; ";
+    std::cout << "); refused:";
+    for(const auto& kv : refused) std::cout << " " << kv.second << " (" << Q::describe(kv.first) << ")";
+    std::cout << "; " << reversed << " undone by their reverse Q-zip (isomorphic), "
+              << no_reverse_count(Q::Reverse_qzip_status::SINGULARITIES_CANCELLED) << " without a reverse (cancelled singularities)"
+              << std::endl;
+  }
+};
+
+/// a grid with singularities near its bottom border, planted at (x, y) by `kind`: 0 (1) a split of a
+/// regular vertex between its east and west (north and south) edges, which leaves two v5 on either side of
+/// it and two v3 (the split vertex and its copy); k >= 2 a chain of k collapses up the column x, merging
+/// (x - 1, y + i) into (x, y + i + 1), which leaves a 3-5 pair (x, y), (x, y + 1) and a 5-3 pair
+/// (x, y + k), (x - 1, y + k)
+template <typename Mesh>
+void make_grid_with_planted_pairs(Mesh& m, int nx, int ny, const std::vector<std::array<int, 3> >& splits)
+{
+  make_quad_grid(m, nx, ny);
+  std::map<std::pair<int, int>, typename boost::graph_traits<Mesh>::vertex_descriptor> at;
+  for(auto v : vertices(m))
+    at[std::make_pair(int(get(CGAL::vertex_point, m, v).x()), int(get(CGAL::vertex_point, m, v).y()))] = v;
+  for(const std::array<int, 3>& sp : splits)
+  {
+    const int x = sp[0], y = sp[1];
+    if(sp[2] >= 2)
+    {
+      for(int i = 0; i < sp[2]; ++i)
+      {
+        const auto p = at[std::make_pair(x, y + i + 1)], r = at[std::make_pair(x - 1, y + i)];
+        const auto h = halfedge(at[std::make_pair(x, y + i)], p, m).first; // the quad on its left has corners p, r
+        assert(target(next(next(h, m), m), m) == r && Q::can_collapse_quad(h, m));
+        Q::quad_collapse(h, m);
+      }
+      continue;
+    }
+    const bool vertical = sp[2] == 1;
+    const auto v = at[std::make_pair(x, y)];
+    const auto b = vertical ? at[std::make_pair(x, y + 1)] : at[std::make_pair(x + 1, y)];
+    const auto d = vertical ? at[std::make_pair(x, y - 1)] : at[std::make_pair(x - 1, y)];
+    const auto q = Q::split_vertex_into_quad(halfedge(b, v, m).first, halfedge(d, v, m).first, m);
+    const auto c = target(next(next(q, m), m), m);
+    put(get(CGAL::vertex_point, m), c, vertical ? Point(x - 0.5, y, 0) : Point(x, y + 0.5, 0));
+  }
+}
+
+/// the vertex path through the grid points `corners`, joined by straight runs of unit edges; empty when a
+/// point is missing or two consecutive points are not joined by an edge
+template <typename Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>
+grid_polyline(const Mesh& m, const std::map<Point, typename boost::graph_traits<Mesh>::vertex_descriptor>& at,
+              const std::vector<std::pair<int, int> >& corners)
+{
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> path;
+  for(std::size_t k = 0; k < corners.size(); ++k)
+  {
+    int x = corners[k].first, y = corners[k].second;
+    const int tx = k + 1 < corners.size() ? corners[k + 1].first : x, ty = k + 1 < corners.size() ? corners[k + 1].second : y;
+    do
+    {
+      const auto it = at.find(Point(x, y, 0));
+      if(it == at.end()) return {};
+      if(path.empty() || path.back() != it->second)
+      {
+        if(!path.empty() && !halfedge(path.back(), it->second, m).second) return {};
+        path.push_back(it->second);
+      }
+      if(x == tx && y == ty) break;
+      x += (tx > x) - (tx < x); y += (ty > y) - (ty < y);
+    } while(true);
+  }
+  return path;
+}
+
+/// plans and executes `path` in `motion` on a copy of `m`, checks the invariants and the undo by a
+/// history, and leaves the result in `result`; true when the Q-zip was done
+template <typename Mesh>
+bool border_path_qzip(const Mesh& m, const std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& path,
+                      int motion, Mesh& result, Border_path_counters& bc)
+{
+  auto v2v = copy_mesh_with_map(m, result);
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> p;
+  std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor> hs;
+  for(std::size_t i = 0; i < path.size(); ++i)
+  {
+    p.push_back(v2v[path[i]]);
+    if(i > 0) hs.push_back(halfedge(p[i - 1], p[i], result).first);
+  }
+  ++bc.plans;
+  const auto plan = Q::plan_qzip(result, p, Q::Strip_operation(motion));
+  if((bc.halfedge_form++) % 3 == 0) // the halfedge form of the same path gives the same plan
+  {
+    const auto by_halfedges = Q::plan_qzip(result, hs, Q::Strip_operation(motion));
+    assert(by_halfedges.status == plan.status && by_halfedges.path == plan.path && by_halfedges.operations == plan.operations);
+  }
+  if(!plan.is_realizable()) { ++bc.refused[plan.status]; return false; }
+  Mesh original;
+  copy_mesh(result, original);
+  const Snapshot<Mesh> before(result);
+  Q::Qzip_history<Mesh> history(result);
+  const auto r = Q::execute_qzip(result, plan, history);
+  if(!r.is_done())
+  {
+    ++bc.c.rolled_back;
+    ++bc.failures[r.failure];
+    assert(CGAL::is_valid_polygon_mesh(result) && are_isomorphic(result, original));
+    assert(sorted_points(result) == sorted_points(original));
+    return false;
+  }
+  check_done(result, before, r, bc.c);
+  Mesh done;
+  copy_mesh(result, done);
+  history.undo_all();
+  assert(CGAL::is_valid_polygon_mesh(result) && are_isomorphic(result, original));
+  assert(sorted_points(result) == sorted_points(original));
+  if(r.reverse_status == Q::Reverse_qzip_status::AVAILABLE)
+  {
+    // the same Q-zip on another copy, undone by its reverse Q-zip
+    Mesh second;
+    auto v2v2 = copy_mesh_with_map(m, second);
+    std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> p2;
+    for(auto v : path) p2.push_back(v2v2[v]);
+    const auto again = Q::execute_qzip(second, Q::plan_qzip(second, p2, Q::Strip_operation(motion)));
+    assert(again.is_done() && are_isomorphic(second, done));
+    const auto back = Q::reverse_qzip(second, again);
+    assert(back.is_done() && are_isomorphic(second, original));
+    ++bc.reversed;
+  }
+  else ++bc.no_reverse[r.reverse_status];
+  copy_mesh(done, result);
+  return true;
+}
+
+/// Pairs of singularities near the border of a grid, joined by a path that runs along the border (with
+/// the mesh on its left or on its right, around a corner or not) and by the path one row inside it; the
+/// strip between the two is regular, so when both are realizable the two meshes must be isomorphic.
+struct Border_homotopy_counters
+{
+  Border_path_counters along, inside;
+  std::size_t both = 0, only_along = 0, only_inside = 0, around_corner = 0;
+  void print(const char* what) const
+  {
+    along.print((std::string(what) + ", paths along the border").c_str());
+    inside.print((std::string(what) + ", paths one row inside").c_str());
+    std::cout << "    done along the border and inside (isomorphic): " << both << " (" << around_corner
+              << " around a corner); only along the border: " << only_along << "; only inside: " << only_inside << std::endl;
+  }
+};
+
+template <typename Mesh>
+void test_border_path_homotopy(Border_homotopy_counters& bc)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  const std::vector<std::vector<std::array<int, 3> > > layouts = {
+    { { 5, 2, 0 }, { 11, 3, 1 } }, { { 4, 3, 0 }, { 10, 2, 0 } }, { { 3, 4, 1 }, { 12, 2, 1 } }, { { 6, 2, 1 }, { 2, 6, 0 } },
+    { { 3, 5, 0 }, { 12, 4, 0 } }, { { 4, 2, 1 }, { 13, 5, 1 } }, { { 3, 2, 6 }, { 10, 3, 5 } },
+    { { 4, 3, 7 }, { 12, 2, 0 } }, { { 6, 2, 5 }, { 11, 2, 6 } } };
+  for(const auto& layout : layouts)
+  {
+    Mesh m;
+    make_grid_with_planted_pairs(m, 16, 12, layout);
+    std::map<Point, vertex_descriptor> at;
+    for(auto v : vertices(m)) at[get(CGAL::vertex_point, m, v)] = v;
+    const auto sing = singular_vertices(m);
+    for(vertex_descriptor s : sing)
+      for(vertex_descriptor t : sing)
+      {
+        const Point ps = get(CGAL::vertex_point, m, s), pt = get(CGAL::vertex_point, m, t);
+        const int xs = int(ps.x()), ys = int(ps.y()), xt = int(pt.x()), yt = int(pt.y());
+        if(s == t || ps != Point(xs, ys, 0) || pt != Point(xt, yt, 0)) continue;
+        // along the bottom border (the mesh on the left going east, on the right going west), and around
+        // the bottom-left corner; the path one row inside each
+        std::vector<std::pair<std::vector<std::pair<int, int> >, std::vector<std::pair<int, int> > > > shapes;
+        for(int dx : { 0, -1, 1 })
+          if(xs + dx != xt)
+            shapes.push_back({ { { xs, ys }, { xs + dx, ys }, { xs + dx, 0 }, { xt, 0 }, { xt, yt } },
+                               { { xs, ys }, { xs + dx, ys }, { xs + dx, 1 }, { xt, 1 }, { xt, yt } } });
+        if(xs > 1 && ys > 1)
+          shapes.push_back({ { { xs, ys }, { 0, ys }, { 0, 0 }, { xt, 0 }, { xt, yt } },
+                             { { xs, ys }, { 1, ys }, { 1, 1 }, { xt, 1 }, { xt, yt } } });
+        for(const auto& shape : shapes)
+        {
+          const bool corner = shape.first.size() == 5 && shape.first[2] == std::make_pair(0, 0);
+          const auto along = grid_polyline(m, at, shape.first), inside = grid_polyline(m, at, shape.second);
+          if(along.empty() || inside.empty() || !Q::internal::is_simple_edge_path(along, m) ||
+             !Q::internal::is_simple_edge_path(inside, m) || along[1] != inside[1])
+            continue;
+          // no other singularity on the paths, none between them
+          std::vector<Point> loop;
+          for(auto v : along) loop.push_back(get(CGAL::vertex_point, m, v));
+          for(std::size_t x = inside.size() - 1; x-- > 1;) loop.push_back(get(CGAL::vertex_point, m, inside[x]));
+          bool clear = true;
+          for(vertex_descriptor o : sing)
+          {
+            if(o == s || o == t) continue;
+            if(std::count(along.begin(), along.end(), o) || std::count(inside.begin(), inside.end(), o) ||
+               winding_number(loop, get(CGAL::vertex_point, m, o)) != 0)
+              clear = false;
+          }
+          if(!clear) continue;
+          for(int motion = 0; motion < 4; ++motion)
+          {
+            Mesh by_border, by_inside;
+            const bool a = border_path_qzip(m, along, motion, by_border, bc.along);
+            const bool b = border_path_qzip(m, inside, motion, by_inside, bc.inside);
+            if(a && b) { assert(are_isomorphic(by_border, by_inside)); ++bc.both; if(corner) ++bc.around_corner; }
+            else if(a) ++bc.only_along;
+            else if(b) ++bc.only_inside;
+          }
+        }
+      }
+  }
+}
+
+/// Q-zips along caller-given paths that run along the border of real meshes (see path_along_border())
+template <typename Mesh>
+void border_path_qzips(const std::string& file, std::size_t count, unsigned seed, Border_path_counters& bc)
+{
+  Mesh m;
+  const bool ok = read_mesh(file, m);
+  assert(ok);
+  Q::preprocess_valences(m);
+  CGAL::Random rng(seed);
+  const auto sing = singular_vertices(m);
+  for(std::size_t tried = 0, found = 0; found < count && tried < 40 * count; ++tried)
+  {
+    const auto s = sing[std::size_t(rng.get_int(0, int(sing.size())))];
+    const auto path = path_along_border(m, s, rng.get_int(1, 7), rng.get_bool(), 8);
+    if(path.empty()) continue;
+    ++found;
+    Mesh result;
+    border_path_qzip(m, path, rng.get_int(0, 4), result, bc);
+  }
+}
+
+void test_border_paths()
+{
+  Border_homotopy_counters grid_sm, grid_ph;
+  Border_path_counters real;
+  test_border_path_homotopy<Surface_mesh>(grid_sm);
+  test_border_path_homotopy<Polyhedron>(grid_ph);
+  grid_sm.print("planted grids, Surface_mesh");
+  grid_ph.print("planted grids, Polyhedron_3");
+  assert(grid_sm.along.c.done == grid_ph.along.c.done && grid_sm.both == grid_ph.both);
+  assert(grid_sm.both > 0 && grid_sm.around_corner > 0 && grid_sm.along.reversed > 0);
+  // every Q-zip along the border either cancelled singularities or has a reverse Q-zip
+  assert(grid_sm.along.c.done == grid_sm.along.reversed + grid_sm.along.no_reverse_count(Q::Reverse_qzip_status::SINGULARITIES_CANCELLED));
+  for(const char* f : { "data/polylap_suzanne_half.obj", "data/trimesh_target.obj" })
+    border_path_qzips<Surface_mesh>(f, 60, 5, real);
+  border_path_qzips<Polyhedron>("data/polylap_suzanne_half.obj", 30, 6, real);
+  real.print("paths along the border, bundled meshes");
+  assert(real.c.done > 0 && real.c.done == real.reversed + real.no_reverse_count(Q::Reverse_qzip_status::SINGULARITIES_CANCELLED));
 }
 
 int main(int argc, char** argv)
@@ -723,6 +1048,7 @@ int main(int argc, char** argv)
   std::cout << "  refusals, constraints, visitor and named parameters ok" << std::endl;
 
   test_border_endpoints();
+  test_border_paths();
 
   test_reverse_qzip(per_mesh / 3);
 

@@ -61,12 +61,13 @@ enum class Plan_status
 {
   REALIZABLE,            ///< the plan can be executed
   INVALID_PATH,          ///< the path is not a simple edge path of at least one edge
-  UNSUPPORTED_ENDPOINT,  ///< an end of the path is not an interior vertex of valence 3 or 5
+  UNSUPPORTED_ENDPOINT,  ///< an end of the path is not an interior vertex of valence 3 or 5 (nor, for the terminal one, a border defect +1 or -1 on a straight piece of border)
   ENDPOINT_ADJUSTMENT,   ///< an end-point adjustment needs a vertex on the border
   NOT_SIMPLE_AFTER_ADJUSTMENT, ///< the adjusted path is not simple
   NOTHING_TO_DO,         ///< the adjusted plan has no collapse and no split (e.g. two adjacent v3 and a split motion)
   PATH_WOULD_COLLAPSE,   ///< a collapse of the chain would merge away a vertex the path has still to visit
-  BORDER_OR_CONSTRAINED, ///< an operation would touch the border, a constrained edge or a protected face, or collapse a non-quad face
+  BORDER_OR_CONSTRAINED, ///< an operation would touch a constrained edge or a protected face, collapse a non-quad face, or merge a border vertex away other than where the path leaves the border
+  BORDER_FACE_COLLAPSE,  ///< at a path vertex on the border, the compass asks for a collapse on the side of the border, where there is no quad
   EXECUTION_FAILED       ///< the chain could not be completed (a quad would degenerate, a link condition fails) or left a new singularity; the mesh was restored
 };
 
@@ -113,7 +114,8 @@ inline const char* describe(Plan_status s)
     case Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT: return "the adjusted path is not simple";
     case Plan_status::PATH_WOULD_COLLAPSE: return "a collapse would merge away a vertex the path has still to visit";
     case Plan_status::NOTHING_TO_DO: return "the plan has no operation: this motion leaves the pair where it is";
-    case Plan_status::BORDER_OR_CONSTRAINED: return "an operation would touch the border, a feature or a protected face, or collapse a non-quad face";
+    case Plan_status::BORDER_OR_CONSTRAINED: return "an operation would touch a feature or a protected face, collapse a non-quad face, or merge a border vertex away";
+    case Plan_status::BORDER_FACE_COLLAPSE: return "at a path vertex on the border, the compass asks for a collapse on the side of the border";
     case Plan_status::EXECUTION_FAILED: return "the chain of operations could not be completed";
   }
   return "";

@@ -104,8 +104,23 @@ namespace internal {
 
 enum class Turn { LEFT = 1, STRAIGHT = 0, RIGHT = -1 };
 
+// whether the border gap lies among the faces crossed turning counterclockwise from the outgoing
+// halfedge `from` to `to` (same source)
+template <typename PolygonMesh>
+bool crosses_border(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor from,
+                    typename boost::graph_traits<PolygonMesh>::halfedge_descriptor to, const PolygonMesh& pm)
+{
+  for(; from != to; from = ccw(from, pm))
+    if(is_border(from, pm)) return true;
+  return false;
+}
+
 // the compass transport through path vertex v (coming from u, leaving to w): the paper's Sec. 2.5 rule,
-// with the counts taken in the mesh before execution.
+// with the counts taken in the mesh before execution. After LS or RC the rule counts the quads on the
+// left of the path, after RS or LC those on its right: one is a turn towards that side, two is straight,
+// three or more a turn away. At a vertex on the border the quads are counted on the side of the mesh,
+// whatever the tag: the side of the border gap has no quads to count, and treating it as regular gives
+// the same turn (at a regular vertex, interior or on the border, this is the geometric turn).
 template <typename PolygonMesh>
 Turn compass_turn(typename boost::graph_traits<PolygonMesh>::vertex_descriptor u,
                   typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
@@ -115,10 +130,9 @@ Turn compass_turn(typename boost::graph_traits<PolygonMesh>::vertex_descriptor u
   const auto o = halfedge(v, w, pm).first;
   const auto i = halfedge(v, u, pm).first;
   const int q_left = ccw_steps(o, i, pm);
-  const int deg = int(valence(v, pm));
-  const int q_right = deg - q_left;
-  const bool count_left = deg == 4 || previous == Strip_operation::LEFT_SPLIT ||
-                          previous == Strip_operation::RIGHT_COLLAPSE;
+  const int q_right = int(valence(v, pm)) - q_left;
+  bool count_left = previous == Strip_operation::LEFT_SPLIT || previous == Strip_operation::RIGHT_COLLAPSE;
+  if(count_left ? crosses_border(o, i, pm) : crosses_border(i, o, pm)) count_left = !count_left;
   if(count_left)
     return q_left == 1 ? Turn::LEFT : (q_left == 2 ? Turn::STRAIGHT : Turn::RIGHT);
   return q_right == 1 ? Turn::RIGHT : (q_right == 2 ? Turn::STRAIGHT : Turn::LEFT);
@@ -170,16 +184,20 @@ bool is_simple_edge_path(const std::vector<typename boost::graph_traits<PolygonM
 plans a Q-zip along `sketch`, a simple edge path from the initial singularity `sketch.front()` (an
 interior vertex of valence 3 or 5) to the terminal singularity `sketch.back()` (the same, or a border
 vertex with one quad too many on a straight piece of border, whose defect then moves by one border
-edge), with `initial_operation` as the compass at the initial singularity (one of the four motions of
-the pair).
+edge, or with one quad too few, reached along the border), with `initial_operation` as the compass at
+the initial singularity (one of the four motions of the pair). When `sketch.front()` is such a border
+vertex and `sketch.back()` an interior one, the plan is that of the reversed sketch: the chain starts at
+the interior singularity (`plan.source == sketch.back()`), and `initial_operation` is the compass there.
 
 The compass is parallel-transported along the path (paper, Sec. 2.5): straight keeps the tag, a left
 (right) turn takes the next counterclockwise (clockwise) tag, and at an irregular vertex the turn is
 decided by the number of quads on the left of the path (after LS or RC) or on its right (after RS or LC):
-one is a turn towards that side, two is straight, three or more a turn away. The ends are then
-prepared within the one-rings of the two singularities (Sec. 2.6; for a border target, see the user
-manual, "Border End Points"), folds created by the preparation are removed, and the plan is checked
-against the border, constrained edges and protected faces.
+one is a turn towards that side, two is straight, three or more a turn away; at a path vertex on the
+border the quads are counted on the side of the mesh (the inner vertices of `sketch` may lie on the
+border: see the user manual, "Paths Along the Border"). The ends are then prepared within the one-rings
+of the two singularities (Sec. 2.6; for a border target, see the user manual, "Border End Points"), folds
+created by the preparation are removed, and the plan is checked against the border (no collapse on the
+side of the border), constrained edges and protected faces.
 The mesh is not modified.
 
 \tparam PolygonMesh a model of `FaceGraph`
@@ -229,6 +247,10 @@ plan_qzip(const PolygonMesh& pm,
   plan.sketch = sketch;
   plan.initial_operation = initial_operation;
   if(!internal::is_simple_edge_path(sketch, pm)) { plan.status = Plan_status::INVALID_PATH; return plan; }
+  // a border source: the chain starts inside, so this is the plan of the reversed sketch, and
+  // `initial_operation` is the compass at its start, the interior singularity sketch.back()
+  if(internal::is_border_vertex(sketch.front(), pm) && !internal::is_border_vertex(sketch.back(), pm))
+    return plan_qzip(pm, std::vector<vertex_descriptor>(sketch.rbegin(), sketch.rend()), initial_operation, np);
   plan.source = sketch.front();
   plan.target = sketch.back();
   plan.source_valence = int(internal::valence(plan.source, pm));
@@ -247,7 +269,9 @@ plan_qzip(const PolygonMesh& pm,
     });
   };
   const bool border_target = internal::is_border_vertex(plan.target, pm);
-  const bool target_supported = border_target ? defect_and_expected_faces(plan.target) == std::make_pair(1, 2)
+  const std::pair<int, int> target_defect = border_target ? defect_and_expected_faces(plan.target) : std::make_pair(0, 0);
+  const bool quad_too_few = target_defect == std::make_pair(-1, 2);
+  const bool target_supported = border_target ? (target_defect == std::make_pair(1, 2) || quad_too_few)
                                               : (plan.target_valence == 3 || plan.target_valence == 5);
   if(!target_supported) { plan.status = Plan_status::UNSUPPORTED_ENDPOINT; return plan; }
 
@@ -271,13 +295,13 @@ plan_qzip(const PolygonMesh& pm,
     internal::transport_compass(plan.path, plan.operations, (std::min)(retransport_from, first_fold + 1), pm);
   const Strip_operation start_tag = plan.operations[0];
   if(st == Plan_status::REALIZABLE)
-    st = border_target ? prep.prepare_border_end(plan.path, plan.operations)
+    st = border_target ? prep.prepare_border_end(plan.path, plan.operations, quad_too_few)
                        : prep.prepare_end(plan.path, plan.operations, initial_operation, transport);
   if(st == Plan_status::REALIZABLE && plan.path[0] == plan.source && plan.operations[0] != start_tag &&
      is_split(plan.operations[0]))
     st = prep.prepare_start(plan.path, plan.operations, retransport_from);
   if(st == Plan_status::REALIZABLE) st = prep.remove_folds(plan.path, plan.operations, first_fold);
-  if(st == Plan_status::REALIZABLE && border_target)
+  if(st == Plan_status::REALIZABLE && border_target && !quad_too_few)
   {
     const std::pair<int, int> e = defect_and_expected_faces(plan.path.back()); // regular, or one quad short: cancels
     if(e.second != 2 || (e.first != 0 && e.first != -1)) st = Plan_status::ENDPOINT_ADJUSTMENT;
@@ -286,33 +310,41 @@ plan_qzip(const PolygonMesh& pm,
     st = Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT;
   if(st != Plan_status::REALIZABLE) { plan.status = st; return plan; }
 
-  // every vertex the chain operates on is a path vertex or one of its neighbours: keep the path
-  // away from the border (collapses of border faces) and from features and protected faces.
+  // every vertex the chain operates on is a path vertex or one of its neighbours: keep the path away
+  // from features and protected faces. Inner path vertices may lie on the border (a path along the
+  // border); the ends and the adjustment vertices are interior, apart from a border target and its
+  // continuation.
   // (faces that are not quads may be next to the path: no collapse is ever attempted on them, splits
   // keep their degree, and the executor checks every operation)
-  // (a border target is the one path vertex allowed on the border: its incident quads are part of the move)
   for(vertex_descriptor v : plan.path)
     for(auto h : halfedges_around_target(halfedge(v, pm), pm))
-    {
-      const bool border_ok = border_target && (v == plan.target || v == plan.path.back());
-      if((is_border_edge(h, pm) && !border_ok) || get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm))))
+      if(get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm))))
       { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
-    }
-  // the far corner of each collapsed quad, as far as the mesh before execution tells (the executor
-  // refuses these collapses anyway, but only after the chain has started): it may not be a vertex the
-  // path has still to visit (most such plans come from the S2 re-routing of a v3 start), nor touch the
-  // border (a path one edge away from it), a constrained edge or a protected face
+  // each collapse, as far as the mesh before execution tells (the executor refuses these collapses
+  // anyway, but only after the chain has started): at a path vertex on the border it must be on the side
+  // of the mesh; its far corner (the vertex merged away) may not be a vertex the path has still to visit
+  // (most such plans come from the S2 re-routing of a v3 start), nor touch a constrained edge or a
+  // protected face; it may lie on the border only where the path leaves the border (path[j] on the
+  // border, the kept path[j + 1] inside: the merged vertex takes the place of the far corner there).
+  // Elsewhere, e.g. a collapse towards the border along a path one edge away from it, the collapses would
+  // pull the border onto the path and leave border defects.
   for(std::size_t j = 0; j + 1 < plan.path.size(); ++j)
   {
     if(!is_collapse(plan.operations[j])) continue;
     const auto h = internal::collapsed_quad(halfedge(plan.path[j], plan.path[j + 1], pm).first, plan.operations[j], pm);
-    if(is_border(h, pm)) continue;
+    if(is_border(h, pm)) { plan.status = Plan_status::BORDER_FACE_COLLAPSE; return plan; }
     const vertex_descriptor far_corner = target(next(next(h, pm), pm), pm);
     if(std::find(plan.path.begin() + std::ptrdiff_t(j + 1), plan.path.end(), far_corner) != plan.path.end())
     { plan.status = Plan_status::PATH_WOULD_COLLAPSE; return plan; }
+    bool far_on_border = false;
     for(auto hc : halfedges_around_target(halfedge(far_corner, pm), pm))
-      if(is_border_edge(hc, pm) || get(ecm, edge(hc, pm)) || get(fcm, face(hc, pm)))
+    {
+      if(is_border(hc, pm)) far_on_border = true;
+      else if(get(ecm, edge(hc, pm)) || get(fcm, face(hc, pm)))
       { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
+    }
+    if(far_on_border && (!internal::is_border_vertex(plan.path[j], pm) || internal::is_border_vertex(plan.path[j + 1], pm)))
+    { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
   }
   plan.status = plan.number_of_collapses() + plan.number_of_splits() == 0 ? Plan_status::NOTHING_TO_DO
                                                                           : Plan_status::REALIZABLE;

@@ -267,6 +267,69 @@ copy_mesh_with_map(const Mesh& src, Mesh& dst)
   return v2v;
 }
 
+
+/// A path from the interior vertex `s` that runs along the border: the shortest path through regular
+/// interior vertices to the nearest border vertex, then `steps` edges along the border (with the mesh on
+/// the left of the path, or on its right), then the shortest path through regular interior vertices to
+/// the nearest interior singular vertex (valence other than 4) other than `s`. Each search goes at most
+/// `radius` edges. Empty when there is no such simple path.
+/// With `target` a border vertex, the walk along the border stops there instead (at most `steps` edges).
+template <typename Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>
+path_along_border(const Mesh& m, typename boost::graph_traits<Mesh>::vertex_descriptor s, int steps,
+                  bool mesh_on_left, int radius,
+                  typename boost::graph_traits<Mesh>::vertex_descriptor target = boost::graph_traits<Mesh>::null_vertex())
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::vector<vertex_descriptor> path;
+  // breadth-first from `from` through regular interior vertices not in `path`, to the first vertex
+  // accepted by `is_end`; appends the vertices after `from`
+  auto extend = [&](vertex_descriptor from, auto is_end)
+  {
+    std::map<vertex_descriptor, vertex_descriptor> pred;
+    std::map<vertex_descriptor, int> dist;
+    std::vector<vertex_descriptor> queue(1, from);
+    pred[from] = from; dist[from] = 0;
+    for(std::size_t i = 0; i < queue.size(); ++i)
+    {
+      const vertex_descriptor v = queue[i];
+      if(v != from && is_end(v))
+      {
+        std::vector<vertex_descriptor> piece;
+        for(vertex_descriptor x = v; x != from; x = pred[x]) piece.push_back(x);
+        path.insert(path.end(), piece.rbegin(), piece.rend());
+        return true;
+      }
+      if(dist[v] == radius || (v != from && (on_border(v, m) || valence(v, m) != 4))) continue;
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+      {
+        const vertex_descriptor u = source(h, m);
+        if(pred.count(u) || std::find(path.begin(), path.end(), u) != path.end()) continue;
+        pred[u] = v; dist[u] = dist[v] + 1;
+        queue.push_back(u);
+      }
+    }
+    return false;
+  };
+  path.push_back(s);
+  if(!extend(s, [&](vertex_descriptor v) { return on_border(v, m); })) return {};
+  for(int k = 0; k < steps; ++k)
+  {
+    // with the mesh on the left, the path edge v->w has the border on its right: w->v is a border halfedge
+    const vertex_descriptor v = path.back();
+    vertex_descriptor w = boost::graph_traits<Mesh>::null_vertex();
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+      if(is_border(mesh_on_left ? h : opposite(h, m), m)) w = source(h, m);
+    if(w == boost::graph_traits<Mesh>::null_vertex() || std::find(path.begin(), path.end(), w) != path.end()) return {};
+    path.push_back(w);
+    if(w == target) return path;
+  }
+  if(target != boost::graph_traits<Mesh>::null_vertex()) return {};
+  if(!extend(path.back(), [&](vertex_descriptor v) { return v != s && !on_border(v, m) && valence(v, m) != 4; }))
+    return {};
+  return path;
+}
+
 } // namespace qzip_test
 
 #endif // QZIP_TEST_UTILS_H

@@ -223,23 +223,26 @@ std::map<Point, typename boost::graph_traits<Mesh>::vertex_descriptor> vertices_
 }
 
 /// the pairs (interior singularity, border vertex with defect +1) at most `max_length` edges apart, by
-/// position: an undo may give re-created vertices new descriptors (Polyhedron_3)
+/// position: an undo may give re-created vertices new descriptors (Polyhedron_3). With `defect` -1, the
+/// pairs (interior singularity, border vertex with defect -1) joined by a path along the border
+/// (`path_along_border()`, at most 12 border edges; no path through interior vertices reaches them).
 template <typename Mesh>
-std::vector<std::pair<Point, Point> > interior_to_border_defect_pairs(const Mesh& m, std::size_t max_length)
+std::vector<std::pair<Point, Point> > interior_to_border_defect_pairs(const Mesh& m, std::size_t max_length, int defect = 1)
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   std::vector<vertex_descriptor> sources, targets;
   for(vertex_descriptor v : vertices(m))
   {
-    if(on_border(v, m)) { if(CGAL::Qzip::vertex_defect(v, m) == 1) targets.push_back(v); }
+    if(on_border(v, m)) { if(CGAL::Qzip::vertex_defect(v, m) == defect) targets.push_back(v); }
     else if(valence(v, m) == 3 || valence(v, m) == 5) sources.push_back(v);
   }
   std::vector<std::pair<Point, Point> > pairs;
   for(vertex_descriptor t : targets)
     for(vertex_descriptor s : sources)
     {
-      const auto path = CGAL::Qzip::shortest_surgery_path(m, s, t);
-      if(path.size() >= 2 && path.size() <= max_length + 1)
+      const auto path = defect == 1 ? CGAL::Qzip::shortest_surgery_path(m, s, t) : path_along_border(m, s, 12, true, 8, t);
+      const auto other = defect == 1 ? path : path_along_border(m, s, 12, false, 8, t);
+      if((path.size() >= 2 && path.size() <= max_length + 1) || (other.size() >= 2 && other.size() <= max_length + 1))
         pairs.emplace_back(get(CGAL::vertex_point, m, s), get(CGAL::vertex_point, m, t));
     }
   return pairs;

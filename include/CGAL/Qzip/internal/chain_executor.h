@@ -84,6 +84,7 @@ class Chain_executor
   std::unordered_map<vertex_descriptor, Before, Vertex_hash> before;
   std::unordered_map<vertex_descriptor, int, Vertex_hash> ideal;
   std::unordered_set<vertex_descriptor, Vertex_hash> alive, created;
+  std::unordered_set<vertex_descriptor, Vertex_hash> took_border; // interior vertices merged with a border vertex
   std::unordered_set<face_descriptor, Face_hash> new_faces;
   // the same vertices and faces in the order they appeared, so that every decision and every output
   // follows the surgery, not the hash order of descriptors (which differs between mesh types)
@@ -182,10 +183,13 @@ private:
     if(is_border(h, pm) || !can_collapse_quad(h, pm)) return false;
     const vertex_descriptor a = target(h, pm), b = target(next(h, pm), pm);
     const vertex_descriptor c = target(next(next(h, pm), pm), pm), d = source(h, pm);
-    if(is_border_vertex(c, pm) || constrained_around(a) || constrained_around(c)) return false;
+    if(constrained_around(a) || constrained_around(c)) return false;
     touch(a); touch(b); touch(c); touch(d);
     visitor.on_collapse(h, pm);
     new_faces.erase(face(h, pm));
+    // a border c merged into an interior a (can_collapse_quad() refuses two border vertices): the merged
+    // vertex takes the place of c on the border, with the number of quads c should have
+    if(is_border_vertex(c, pm) && !is_border_vertex(a, pm)) { ideal[a] = ideal_number_of_faces(c); took_border.insert(a); }
     alive.erase(c);
     created.erase(c);
     last_delimiters = log.collapse(h);
@@ -205,7 +209,8 @@ private:
     const vertex_descriptor c = target(next(next(last_quad, pm), pm), pm);
     alive.insert(c);
     created.insert(c);
-    if(is_border_vertex(c, pm)) ideal.emplace(c, 2);
+    // a copy on the border takes the place of v there (v was on the border), with its number of quads
+    if(is_border_vertex(c, pm)) ideal[c] = ideal_number_of_faces(v);
     vertex_order.push_back(c);
     new_faces.insert(face(last_quad, pm));
     face_order.push_back(face(last_quad, pm));
@@ -380,7 +385,7 @@ private:
     {
       const auto it = created.count(v) == 0 ? before.find(v) : before.end();
       const Around a = around(v);
-      if(a.border && it != before.end() && !it->second.border) return false;
+      if(a.border && it != before.end() && !it->second.border && took_border.count(v) == 0) return false;
       const int c = singularity_code(v, a);
       if(c != 0) is.push_back(c);
     }

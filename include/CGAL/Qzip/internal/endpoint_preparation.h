@@ -113,16 +113,46 @@ public:
   // neighbour counterclockwise from u after RC, the last one after LC), with one edge between them
   // after a split. Rules found by enumerating every one-edge continuation and every tag on planted grids
   // and real meshes (user manual, "Border End Points"); other arrivals are refused.
-  Plan_status prepare_border_end(Path& path, Operations& ops) const
+  //
+  // Arriving along the border (u->t a border edge), the chain goes on straight along the border to the
+  // other border neighbour e of t, and only after the split that inserts its strip on the side of the
+  // mesh (LS with the mesh on the left of u->t, RS with it on the right): t gets the same split, which
+  // hands the defect to e. After the other tags no continuation moved the defect (enumerated likewise).
+  //
+  // A border end t with one quad too few (defect -1, a single quad) is reached along the border only;
+  // the path ends there, as at an interior v3 (E1), after the split that inserts its strip on the side
+  // of the border (RS with the mesh on the left of u->t, LS with it on the right). Found by enumeration
+  // too: after the two collapses the chain often fails, after the other split it mostly does.
+  Plan_status prepare_border_end(Path& path, Operations& ops, bool quad_too_few) const
   {
     const std::size_t n = path.size();
     const vertex_descriptor t = path[n - 1], u = path[n - 2];
     const Strip_operation last = ops[n - 2];
     if(last == Strip_operation::NO_OPERATION) return Plan_status::ENDPOINT_ADJUSTMENT;
+    const halfedge_descriptor ut = out(u, t);
+    if(quad_too_few)
+    {
+      if(!is_border_edge(ut, pm)) return Plan_status::ENDPOINT_ADJUSTMENT;
+      const bool mesh_on_left = !is_border(ut, pm);
+      return last == (mesh_on_left ? Strip_operation::RIGHT_SPLIT : Strip_operation::LEFT_SPLIT)
+               ? Plan_status::REALIZABLE : Plan_status::ENDPOINT_ADJUSTMENT;
+    }
+    if(is_border_edge(ut, pm))
+    {
+      const bool mesh_on_left = !is_border(ut, pm);
+      if(last != (mesh_on_left ? Strip_operation::LEFT_SPLIT : Strip_operation::RIGHT_SPLIT))
+        return Plan_status::ENDPOINT_ADJUSTMENT;
+      // the other border edge at t, across the border gap from t->u
+      const halfedge_descriptor te = mesh_on_left ? ccw(opposite(ut, pm), pm) : cw(opposite(ut, pm), pm);
+      path.push_back(target(te, pm));
+      ops[n - 1] = last;
+      ops.push_back(Strip_operation::NO_OPERATION);
+      return Plan_status::REALIZABLE;
+    }
     const bool counts_left = last == Strip_operation::LEFT_SPLIT || last == Strip_operation::RIGHT_COLLAPSE;
     const int deg = int(valence(t, pm));
     const int k = last == Strip_operation::RIGHT_COLLAPSE ? 1 : (last == Strip_operation::LEFT_COLLAPSE ? deg - 1 : 2);
-    const halfedge_descriptor te = rotate_outgoing(out(t, u), k, pm);
+    const halfedge_descriptor te = rotate_outgoing(opposite(ut, pm), k, pm);
     if(!is_border(counts_left ? te : opposite(te, pm), pm)) return Plan_status::ENDPOINT_ADJUSTMENT;
     path.push_back(target(te, pm));
     ops[n - 1] = is_collapse(last) ? rotate(last, 2) : last;

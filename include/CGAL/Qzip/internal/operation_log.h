@@ -74,7 +74,9 @@ public:
   // forgets the last mark, keeping its operations in the previous group
   void drop_mark() { entries.drop_mark(); }
 
-  // collapses face(h), keeping target(h), and puts the kept vertex at the midpoint of the two merged ones.
+  // collapses face(h), keeping target(h), and puts the kept vertex at the midpoint of the two merged ones
+  // (a border vertex stays where it is; a kept vertex that takes the border from the removed one takes its
+  // place too, so that the border keeps its shape).
   Split_delimiters<PolygonMesh> collapse(halfedge_descriptor h)
   {
     Entry e;
@@ -87,12 +89,14 @@ public:
     e.moved = vertex_ids.name(a);
     e.moved_from = get(vpm, a);
     e.removed_at = get(vpm, c);
+    const bool kept_on_border = is_border_vertex(a, pm), removed_on_border = is_border_vertex(c, pm);
     const Split_delimiters<PolygonMesh> d = quad_collapse(h, pm);
     for(int i = 0; i < 4; ++i) halfedge_ids.unbind(removed[i]);
     vertex_ids.unbind(c);
     e.first = halfedge_ids.name(d.first);
     e.second = halfedge_ids.name(d.second);
-    if(!is_border_vertex(a, pm)) put(vpm, a, CGAL::midpoint(e.moved_from, e.removed_at)); // the border keeps its shape
+    if(removed_on_border && !kept_on_border) put(vpm, a, e.removed_at);
+    else if(!kept_on_border) put(vpm, a, CGAL::midpoint(e.moved_from, e.removed_at));
     entries.push(e);
     return d;
   }
