@@ -119,6 +119,26 @@ private:
   mutable unsigned int near_round = 0;
   mutable std::vector<int> near_queue;
   mutable std::vector<std::pair<int, int> > near_found;
+  // the closest singularities kept across batches: a search around a vertex only read the ball of
+  // `radius` edges around it, so its answer holds while no vertex of that ball is edited. The vertices
+  // and positions of the labels are checked when used: a descriptor may have been recycled, and an undone
+  // surgery gives back the same mesh with new descriptors.
+  struct Kept
+  {
+    vertex_descriptor owner;
+    Point position;
+    int radius;
+    bool complete;
+    std::size_t count;
+    vertex_descriptor label[max_nearest_singularities];
+    Point label_position[max_nearest_singularities];
+    int distance[max_nearest_singularities];
+  };
+  typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<std::size_t> >::type Kept_map;
+  Kept_map kept_index; // 1 + the index in `kept`, 0 for none
+  mutable std::vector<Kept> kept;
+  mutable std::vector<std::size_t> kept_free;
+  mutable int kept_radius = 0; // the largest radius of a kept search
   // separatrices: the singularities whose separatrices pass through each vertex (compressed rows), and,
   // computed when first asked for in a batch, the three closest of them within m_separatrix_radius edges
   std::vector<int> sep_begin, sep_owner;
@@ -150,7 +170,8 @@ public:
   Scoring_context(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm)
     : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm),
       stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
-      index_map(get(CGAL::dynamic_vertex_property_t<int>(), pm))
+      index_map(get(CGAL::dynamic_vertex_property_t<int>(), pm)),
+      kept_index(get(CGAL::dynamic_vertex_property_t<std::size_t>(), pm))
   {
     for(std::size_t i = 0; i < 4; ++i)
       slots.push_back(Slot{ GT::null_vertex(), -1, 0u, get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm),
@@ -158,6 +179,7 @@ public:
     for(vertex_descriptor v : vertices(pm))
     {
       put(stamp, v, 0u);
+      put(kept_index, v, 0);
       for(Slot& sl : slots) put(sl.stamp, v, 0u);
     }
     // geometric mean: the log-ratios of the sizing term then average to zero over the input
@@ -174,6 +196,57 @@ public:
 
   // refreshes everything; returns the singular vertices sorted by position.
   std::vector<vertex_descriptor> begin_batch()
+  {
+    for(const Kept& k : kept) put(kept_index, k.owner, 0);
+    kept.clear();
+    kept_free.clear();
+    kept_radius = 0;
+    return refresh();
+  }
+
+  // same, after a batch that edited (moved, or changed the neighbors of) the vertices `edited` and no
+  // other vertex, except by surgeries it undid: the closest singularities found in earlier batches are
+  // kept for the vertices farther from the edited ones than their search went.
+  std::vector<vertex_descriptor> begin_batch(const std::vector<vertex_descriptor>& edited)
+  {
+    std::vector<vertex_descriptor> singular = refresh();
+    if(kept.size() == kept_free.size()) return singular;
+    if(++near_round == 0) { std::fill(near_visit.begin(), near_visit.end(), 0u); near_round = 1; }
+    near_queue.clear();
+    std::vector<int> level;
+    for(vertex_descriptor v : edited)
+    {
+      const int i = index(v);
+      if(i < 0 || near_visit[std::size_t(i)] == near_round) continue;
+      near_visit[std::size_t(i)] = near_round;
+      near_queue.push_back(i);
+      level.push_back(0);
+    }
+    for(std::size_t q = 0; q < near_queue.size(); ++q)
+    {
+      const int u = near_queue[std::size_t(q)];
+      const std::size_t k = get(kept_index, by_index[std::size_t(u)]);
+      if(k != 0 && kept[k - 1].radius >= level[q]) forget(k);
+      if(level[q] >= kept_radius) continue;
+      for(const int* w = neighbors_begin(u); w != neighbors_end(u); ++w)
+      {
+        if(near_visit[std::size_t(*w)] == near_round) continue;
+        near_visit[std::size_t(*w)] = near_round;
+        near_queue.push_back(*w);
+        level.push_back(level[q] + 1);
+      }
+    }
+    return singular;
+  }
+
+private:
+  void forget(std::size_t k) const
+  {
+    put(kept_index, kept[k - 1].owner, 0);
+    kept_free.push_back(k - 1);
+  }
+
+  std::vector<vertex_descriptor> refresh()
   {
     ++epoch;
     clear_cache();
@@ -256,6 +329,7 @@ public:
     return singular;
   }
 
+public:
   void clear_cache()
   {
     for(Slot& sl : slots) sl.source = GT::null_vertex();
@@ -491,6 +565,7 @@ private:
     const std::size_t K = max_nearest_singularities;
     if(near_known[std::size_t(i)] == epoch &&
        (near_complete[std::size_t(i)] || count_other_labels(i, x1, x2) >= n)) return;
+    if(near_known[std::size_t(i)] != epoch && restore_nearest(i, x1, x2, n)) return;
     if(++near_round == 0) { std::fill(near_visit.begin(), near_visit.end(), 0u); near_round = 1; }
     near_known[std::size_t(i)] = epoch;
     unsigned char& count = near_labels.count[std::size_t(i)];
@@ -499,8 +574,10 @@ private:
     near_queue.assign(1, i);
     near_visit[std::size_t(i)] = near_round;
     std::size_t begin = 0;
+    int radius = 0;
     for(std::size_t level = 0; begin < near_queue.size() && count < K && others < n; ++level)
     {
+      radius = int(level);
       const std::size_t end = near_queue.size();
       near_found.clear();
       std::size_t found_others = 0;
@@ -533,6 +610,63 @@ private:
       begin = end;
     }
     near_complete[std::size_t(i)] = count == K || others < n; // else the ball around i has fewer
+    keep_nearest(i, radius);
+  }
+
+  // records the labels of vertex i, found by a search of `radius` edges, in `kept`
+  void keep_nearest(int i, int radius) const
+  {
+    const std::size_t K = max_nearest_singularities;
+    const vertex_descriptor v = by_index[std::size_t(i)];
+    std::size_t k = get(kept_index, v);
+    if(k == 0 || k > kept.size() || kept[k - 1].owner != v)
+    {
+      if(kept_free.empty()) { kept.emplace_back(); k = kept.size(); }
+      else { k = kept_free.back() + 1; kept_free.pop_back(); }
+      put(kept_index, v, k);
+    }
+    Kept& e = kept[k - 1];
+    e.owner = v;
+    e.position = get(vpm, v);
+    e.radius = radius;
+    e.complete = near_complete[std::size_t(i)] != 0;
+    e.count = near_labels.count[std::size_t(i)];
+    for(std::size_t j = 0; j < e.count; ++j)
+    {
+      e.label[j] = by_index[std::size_t(near_labels.source[std::size_t(i) * K + j])];
+      e.label_position[j] = get(vpm, e.label[j]);
+      e.distance[j] = near_labels.distance[std::size_t(i) * K + j];
+    }
+    kept_radius = (std::max)(kept_radius, radius);
+  }
+
+  // the labels of vertex i from `kept`, if they are known there, still hold (same vertex and labels at
+  // the same places, still singular) and suffice for the query
+  bool restore_nearest(int i, int x1, int x2, std::size_t n) const
+  {
+    const std::size_t K = max_nearest_singularities;
+    const vertex_descriptor v = by_index[std::size_t(i)];
+    const std::size_t k = get(kept_index, v);
+    if(k == 0 || k > kept.size()) return false;
+    const Kept& e = kept[k - 1];
+    if(e.owner != v || !(e.position == get(vpm, v))) return false;
+    std::size_t others = 0;
+    for(std::size_t j = 0; j < e.count; ++j)
+    {
+      const int l = index(e.label[j]);
+      if(l < 0 || ranks[std::size_t(l)] < 0 || !(e.label_position[j] == get(vpm, e.label[j]))) return false;
+      if(l != i && l != x1 && l != x2) ++others;
+    }
+    if(!e.complete && others < n) return false;
+    near_known[std::size_t(i)] = epoch;
+    near_complete[std::size_t(i)] = e.complete ? 1 : 0;
+    near_labels.count[std::size_t(i)] = static_cast<unsigned char>(e.count);
+    for(std::size_t j = 0; j < e.count; ++j)
+    {
+      near_labels.source[std::size_t(i) * K + j] = index(e.label[j]);
+      near_labels.distance[std::size_t(i) * K + j] = e.distance[j];
+    }
+    return true;
   }
 
   // the three closest distinct singularities whose separatrices pass within m_separatrix_radius edges of
