@@ -250,11 +250,12 @@ public:
         const Point old = get(vpm, v);
         const Point np = feature_vertices.count(v) == 0 ? project(v, targets[i], old) : targets[i];
         if(np == old) continue;
-        const double before = min_quad_quality(v);
+        // kept if the incident quads stay above the floor, or else are not worse than before
         put(vpm, v, np);
         const double after = min_quad_quality(v);
-        if(after >= before || (after > 0 && after >= quality_floor)) ++accepted;
-        else put(vpm, v, old);
+        if(after > 0 && after >= quality_floor) { ++accepted; continue; }
+        put(vpm, v, old);
+        if(after >= min_quad_quality(v)) { put(vpm, v, np); ++accepted; }
       }
     }
     return accepted;
