@@ -13,7 +13,6 @@
 #include <CGAL/Qzip/quad_operations.h>
 #include <CGAL/Qzip/surgery_plan.h>
 #include <CGAL/Qzip/internal/vertex_defect.h>
-#include <CGAL/Qzip/internal/rotation.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
@@ -706,24 +705,28 @@ private:
   }
 
   // straight edge lines from every interior singularity, through regular interior vertices, until a
-  // singular, border or feature vertex or `m_separatrix_length` edges; (vertex, owner) pairs.
+  // singular, border or feature vertex or `m_separatrix_length` edges; (vertex, owner) pairs. At a regular
+  // vertex the line leaves by the neighbor opposite to the one it came from (two places further in the
+  // neighbors, which are in rotation order).
   void trace_separatrices(const std::vector<vertex_descriptor>& singular,
                           std::vector<std::pair<int, int> >& out) const
   {
-    for(vertex_descriptor s : singular)
+    for(vertex_descriptor sv : singular)
     {
-      if(cut[std::size_t(index(s))]) continue;
-      for(halfedge_descriptor h0 : halfedges_around_target(halfedge(s, pm), pm))
+      const int s = index(sv);
+      if(cut[std::size_t(s)]) continue;
+      for(const int* first = neighbors_begin(s); first != neighbors_end(s); ++first)
       {
-        halfedge_descriptor o = opposite(h0, pm); // s -> w
+        int from = s, w = *first;
         for(int len = 0; len < m_separatrix_length; ++len)
         {
-          const vertex_descriptor w = target(o, pm);
           if(w == s) break;
-          out.emplace_back(index(w), index(s));
-          const std::size_t iw = std::size_t(index(w));
-          if(defects[iw] != 0 || cut[iw] || valence_at(int(iw)) != 4) break;
-          o = internal::rotate_outgoing(opposite(o, pm), 2, pm);
+          out.emplace_back(w, s);
+          if(defects[std::size_t(w)] != 0 || cut[std::size_t(w)] || valence_at(w) != 4) break;
+          const int* nb = neighbors_begin(w);
+          const int k = int(std::find(nb, nb + 4, from) - nb);
+          from = w;
+          w = nb[(k + 2) % 4];
         }
       }
     }
