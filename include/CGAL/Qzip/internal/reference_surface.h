@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -29,9 +28,9 @@ namespace internal {
 
 // A triangulated surface that answers closest-point queries exactly as `CGAL::AABB_tree::closest_point(p,
 // start)` does (the closest point of the triangles, or `start` if it is closer than all of them), but
-// that first tries a uniform grid of cells around the triangle of a previous answer (the hint): when the
-// sphere through that triangle's closest point spans a few cells and a single point is closest among the
-// triangles of these cells, it is the tree's answer. Other queries (no hint, a large sphere, two closest
+// that first tries a uniform grid of cells (hashed into buckets) around the triangle of a previous answer
+// (the hint): when the sphere through that triangle's closest point spans a few cells and a single point
+// is closest among the triangles of their buckets, it is the tree's answer. Other queries (no hint, a large sphere, two closest
 // points at the same distance, where the tree's answer depends on its order) go to the tree.
 template <typename GeomTraits>
 class Reference_surface
@@ -48,16 +47,29 @@ class Reference_surface
   std::vector<Triangle> triangles;
   std::vector<Bbox_3> boxes;
   std::unique_ptr<Tree> tree;
-  // the grid: cells of side `cell` from `origin`; the triangles whose bounding box meets each cell
+  // the grid: cells of side `cell` from `origin`, hashed into 2^bucket_bits buckets; a bucket lists the
+  // triangles whose bounding box meets one of its cells (bucket_begin: compressed rows)
   double origin[3] = { 0, 0, 0 };
   double cell = 1;
-  std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t> > cells; // key -> range in cell_triangles
-  std::vector<std::size_t> cell_triangles;
+  int bucket_bits = 0;
+  std::vector<std::size_t> bucket_begin, bucket_triangles;
 
   long long cell_index(double x, int axis) const { return (long long)(std::floor((x - origin[axis]) / cell)); }
 
-  static std::uint64_t key(long long i, long long j, long long k)
-  { return (std::uint64_t(i) << 42) | (std::uint64_t(j) << 21) | std::uint64_t(k); }
+  std::size_t bucket(long long i, long long j, long long k) const
+  {
+    const std::uint64_t key = (std::uint64_t(i) << 42) | (std::uint64_t(j) << 21) | std::uint64_t(k);
+    return std::size_t((key * 0x9E3779B97F4A7C15ULL) >> (64 - bucket_bits));
+  }
+
+  template <typename F>
+  void for_each_cell(const Bbox_3& b, F f) const
+  {
+    for(long long i = cell_index(b.xmin(), 0); i <= cell_index(b.xmax(), 0); ++i)
+      for(long long j = cell_index(b.ymin(), 1); j <= cell_index(b.ymax(), 1); ++j)
+        for(long long k = cell_index(b.zmin(), 2); k <= cell_index(b.zmax(), 2); ++k)
+          f(bucket(i, j, k));
+  }
 
   static bool in_range(long long i) { return i >= 0 && i < (1LL << 21); }
 
@@ -100,24 +112,15 @@ public:
     const double span = (std::max)({ all.xmax() - all.xmin(), all.ymax() - all.ymin(), all.zmax() - all.zmin() });
     cell = (std::max)(cell, span / double(1LL << 20)); // every index within 21 bits
     if(!(cell > 0)) cell = 1;
-    std::vector<std::pair<std::uint64_t, std::size_t> > entries;
+    bucket_bits = 1;
+    while((std::size_t(1) << bucket_bits) < 2 * triangles.size()) ++bucket_bits;
+    bucket_begin.assign((std::size_t(1) << bucket_bits) + 1, 0);
+    for(const Bbox_3& b : boxes) for_each_cell(b, [&](std::size_t c) { ++bucket_begin[c + 1]; });
+    for(std::size_t c = 1; c < bucket_begin.size(); ++c) bucket_begin[c] += bucket_begin[c - 1];
+    bucket_triangles.resize(bucket_begin.back());
+    std::vector<std::size_t> cursor(bucket_begin.begin(), bucket_begin.end() - 1);
     for(std::size_t t = 0; t < triangles.size(); ++t)
-    {
-      const Bbox_3& b = boxes[t];
-      for(long long i = cell_index(b.xmin(), 0); i <= cell_index(b.xmax(), 0); ++i)
-        for(long long j = cell_index(b.ymin(), 1); j <= cell_index(b.ymax(), 1); ++j)
-          for(long long k = cell_index(b.zmin(), 2); k <= cell_index(b.zmax(), 2); ++k)
-            entries.emplace_back(key(i, j, k), t);
-    }
-    std::sort(entries.begin(), entries.end());
-    cell_triangles.reserve(entries.size());
-    for(std::size_t e = 0; e < entries.size(); ++e)
-    {
-      if(e == 0 || entries[e].first != entries[e - 1].first)
-        cells[entries[e].first] = std::make_pair(e, e);
-      ++cells[entries[e].first].second;
-      cell_triangles.push_back(entries[e].second);
-    }
+      for_each_cell(boxes[t], [&](std::size_t c) { bucket_triangles[cursor[c]++] = t; });
   }
 
   // the closest point to p as `tree.closest_point(p, start)` gives it; `hint` (1 + the index of a triangle
@@ -147,11 +150,10 @@ public:
       for(long long j = lo[1]; j <= hi[1]; ++j)
         for(long long k = lo[2]; k <= hi[2]; ++k)
         {
-          const auto it = cells.find(key(i, j, k));
-          if(it == cells.end()) continue;
-          for(std::size_t e = it->second.first; e < it->second.second; ++e)
+          const std::size_t bk = bucket(i, j, k);
+          for(std::size_t e = bucket_begin[bk]; e < bucket_begin[bk + 1]; ++e)
           {
-            const std::size_t t = cell_triangles[e];
+            const std::size_t t = bucket_triangles[e];
             if(t == hint - 1) continue;
             const Bbox_3& b = boxes[t];
             double d2 = 0;
