@@ -55,9 +55,9 @@ of every vertex to the border and the features and the separatrices. The closest
 vertex (`nearest_singularities()`, at most `max_nearest_singularities`, ties broken by the position of
 the singularities) are found when first asked for in the batch, by a breadth-first search around the
 vertex that stops once they are known; the variant that skips two singularities and asks for only a few
-of them stops earlier. Both are kept for the batch. `distance_to_separatrix()` is a search within three
-edges done once per vertex and batch. `distance()` runs bounded breadth-first searches, a few of which
-are kept.
+of them stops earlier. Both are kept for the batch, and across batches for the vertices whose search
+ball no surgery touched. `distance_to_separatrix()` is a search within three edges done once per vertex
+and batch. `distance()` runs bounded breadth-first searches, a few of which are kept.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`
 \tparam VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap the property maps of the optimizer
@@ -225,7 +225,8 @@ public:
     {
       const int u = near_queue[std::size_t(q)];
       const std::size_t k = get(kept_index, by_index[std::size_t(u)]);
-      if(k != 0 && kept[k - 1].radius >= level[q]) forget(k);
+      if(k != 0 && k <= kept.size() && kept[k - 1].owner == by_index[std::size_t(u)] && kept[k - 1].radius >= level[q])
+        forget(k);
       if(level[q] >= kept_radius) continue;
       for(const int* w = neighbors_begin(u); w != neighbors_end(u); ++w)
       {
