@@ -52,7 +52,7 @@ class Reference_surface
   double origin[3] = { 0, 0, 0 };
   double cell = 1;
   int bucket_bits = 0;
-  std::vector<std::size_t> bucket_begin, bucket_triangles;
+  std::vector<std::uint32_t> bucket_begin, bucket_triangles;
 
   long long cell_index(double x, int axis) const { return (long long)(std::floor((x - origin[axis]) / cell)); }
 
@@ -113,14 +113,14 @@ public:
     cell = (std::max)(cell, span / double(1LL << 20)); // every index within 21 bits
     if(!(cell > 0)) cell = 1;
     bucket_bits = 1;
-    while((std::size_t(1) << bucket_bits) < 2 * triangles.size()) ++bucket_bits;
+    while((std::size_t(1) << bucket_bits) < 4 * triangles.size()) ++bucket_bits;
     bucket_begin.assign((std::size_t(1) << bucket_bits) + 1, 0);
     for(const Bbox_3& b : boxes) for_each_cell(b, [&](std::size_t c) { ++bucket_begin[c + 1]; });
     for(std::size_t c = 1; c < bucket_begin.size(); ++c) bucket_begin[c] += bucket_begin[c - 1];
     bucket_triangles.resize(bucket_begin.back());
-    std::vector<std::size_t> cursor(bucket_begin.begin(), bucket_begin.end() - 1);
+    std::vector<std::uint32_t> cursor(bucket_begin.begin(), bucket_begin.end() - 1);
     for(std::size_t t = 0; t < triangles.size(); ++t)
-      for_each_cell(boxes[t], [&](std::size_t c) { bucket_triangles[cursor[c]++] = t; });
+      for_each_cell(boxes[t], [&](std::size_t c) { bucket_triangles[cursor[c]++] = std::uint32_t(t); });
   }
 
   // the closest point to p as `tree.closest_point(p, start)` gives it; `hint` (1 + the index of a triangle
@@ -156,13 +156,14 @@ public:
             const std::size_t t = bucket_triangles[e];
             if(t == hint - 1) continue;
             const Bbox_3& b = boxes[t];
-            double d2 = 0;
-            for(int a = 0; a < 3; ++a)
-            {
-              const double d = (std::max)({ b.min(a) - c[a], c[a] - b.max(a), 0. });
-              d2 += d * d;
-            }
+            const double dx = (std::max)((std::max)(b.xmin() - c[0], c[0] - b.xmax()), 0.);
+            double d2 = dx * dx;
             if(d2 > r2) continue;
+            const double dy = (std::max)((std::max)(b.ymin() - c[1], c[1] - b.ymax()), 0.);
+            d2 += dy * dy;
+            if(d2 > r2) continue;
+            const double dz = (std::max)((std::max)(b.zmin() - c[2], c[2] - b.zmax()), 0.);
+            if(d2 + dz * dz > r2) continue;
             const Point q = GeomTraits().construct_projected_point_3_object()(triangles[t], p);
             const CGAL::Comparison_result cmp = GeomTraits().compare_distance_3_object()(p, q, best);
             if(cmp == CGAL::SMALLER) { best = q; best_triangle = t; tie = false; }
