@@ -19,11 +19,10 @@ namespace Qzip {
 
 namespace internal {
 
-// calls f(op, face, along, across) for each operation of the plan that acts on a quad next to the path:
-// the quad on the left of the path edge for RC and LS, on its right for LC and RS; `along` is the length
-// of the path edge and `across` the mean length of the two sides of the quad that leave the path.
-// calls f(operation, face, along, across, area) for each quad that an operation of the plan acts on
-// (see `Scoring_context::strip_quads()`)
+// calls f(op, face, along, across, area) for each operation of the plan that acts on a quad next to the
+// path: the quad on the left of the path edge for RC and LS, on its right for LC and RS; `along` is the
+// length of the path edge, `across` the mean length of the two sides of the quad that leave the path and
+// `area` the area of the quad (see `Scoring_context::strip_quads()`, which keeps them for the last plan).
 template <typename PolygonMesh, typename Context, typename F>
 void for_each_strip_quad(const Surgery_plan<PolygonMesh>& plan, const Context& ctx, F f)
 {
