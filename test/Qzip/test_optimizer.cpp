@@ -142,6 +142,25 @@ void check_nearest_singularities(const PolygonMesh& pm, typename boost::graph_tr
   }
 }
 
+// the variant of nearest_singularities() that skips two singularities and stops after n is the beginning of
+// the full list without them (asked first, so that the full list is then found by a second search)
+template <typename Context, typename Vertex>
+void check_partial_nearest_singularities(const Context& ctx, Vertex v, Vertex x1, Vertex x2, std::size_t n)
+{
+  const auto part = ctx.nearest_singularities(v, x1, x2, n);
+  const auto full = ctx.nearest_singularities(v);
+  assert(part.feature_distance == full.feature_distance);
+  std::size_t k = 0;
+  for(const auto& j : full)
+  {
+    if(j.vertex == x1 || j.vertex == x2) continue;
+    if(k == n) break;
+    assert(k < part.size && part.items[k].vertex == j.vertex && part.items[k].distance == j.distance);
+    ++k;
+  }
+  assert(k == part.size);
+}
+
 // stop predicates, no smoothing, a custom scoring functor
 struct No_collapse_scoring
 {
@@ -157,6 +176,8 @@ struct No_collapse_scoring
       check_nearest_singularities(ctx.mesh(), c.source, ctx);
       check_nearest_singularities(ctx.mesh(), c.source_landing, ctx);
     }
+    if(*calls % 16 == 2 && c.target_landing != boost::graph_traits<PolygonMesh>::null_vertex())
+      check_partial_nearest_singularities(ctx, c.target_landing, c.source, c.target, 1 + *calls % 3);
     if(c.plan->number_of_collapses() > 0) return 1.; // refuse every surgery that collapses a quad
     return Q::Default_scoring()(c, ctx);
   }

@@ -13,11 +13,9 @@
 #include <CGAL/Qzip/Named_function_parameters.h>
 #include <CGAL/Qzip/quad_operations.h>
 #include <CGAL/Qzip/quad_quality.h>
+#include <CGAL/Qzip/internal/reference_surface.h>
 #include <CGAL/Qzip/internal/vertex_defect.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -29,7 +27,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -39,7 +36,7 @@ namespace Qzip {
 namespace internal {
 
 // The valence-weighted Laplacian of the paper's Sec. 4.1 with projection onto a reference surface (the
-// mesh as it was when the smoother was built, triangulated, in an AABB tree). Border vertices, vertices
+// mesh as it was when the smoother was built, triangulated: see Reference_surface). Border vertices, vertices
 // of protected faces and feature corners never move; the other feature vertices (on exactly two
 // constrained edges that turn by at most `corner_angle`) slide along their feature curve: they move halfway towards
 // the midpoint of their two feature neighbors, projected onto the feature polyline as it was when the
@@ -55,18 +52,15 @@ class Quad_smoother
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
   typedef typename GT::face_descriptor face_descriptor;
   typedef typename GeomTraits::Point_3 Point;
-  typedef typename GeomTraits::Triangle_3 Triangle;
-  typedef typename std::vector<Triangle>::const_iterator Triangle_iterator;
-  typedef CGAL::AABB_triangle_primitive<GeomTraits, Triangle_iterator> Primitive;
-  typedef CGAL::AABB_traits<GeomTraits, Primitive> Traits;
-  typedef CGAL::AABB_tree<Traits> Tree;
+  typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<std::size_t> >::type Hint_map;
 
   PolygonMesh& pm;
   VertexPointMap vpm;
   EdgeIsConstrainedMap ecm;
   FaceIsConstrainedMap fcm;
-  std::vector<Triangle> triangles;
-  std::unique_ptr<Tree> tree;
+  Reference_surface<GeomTraits> surface;
+  // per vertex, the triangle of the surface its last projection landed on (see Reference_surface)
+  Hint_map hint;
   std::unordered_map<vertex_descriptor, int, boost::hash<vertex_descriptor> > fixed_valence;
   // feature vertices: their position when the smoother was built; for sliding ones, their two feature neighbors
   struct Feature_vertex { Point origin; bool slides; vertex_descriptor a, b; };
@@ -79,21 +73,23 @@ public:
 
   Quad_smoother(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
                 bool project)
-    : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm)
+    : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm), hint(get(CGAL::dynamic_vertex_property_t<std::size_t>(), pm))
   {
     collect_feature_vertices();
     if(!project) return;
+    for(vertex_descriptor v : vertices(pm)) put(hint, v, 0);
+    std::vector<vertex_descriptor> fv;
     for(face_descriptor f : faces(pm))
     {
-      std::vector<Point> p;
-      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pm), pm)) p.push_back(get(vpm, target(h, pm)));
-      for(std::size_t i = 1; i + 1 < p.size(); ++i)
-        if(!GeomTraits().is_degenerate_3_object()(Triangle(p[0], p[i], p[i + 1])))
-          triangles.push_back(Triangle(p[0], p[i], p[i + 1]));
+      fv.clear();
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pm), pm)) fv.push_back(target(h, pm));
+      for(std::size_t i = 1; i + 1 < fv.size(); ++i)
+      {
+        const std::size_t t = surface.add(get(vpm, fv[0]), get(vpm, fv[i]), get(vpm, fv[i + 1]));
+        if(t != 0) for(vertex_descriptor v : { fv[0], fv[i], fv[i + 1] }) put(hint, v, t);
+      }
     }
-    if(triangles.empty()) return;
-    tree.reset(new Tree(triangles.begin(), triangles.end()));
-    tree->build();
+    surface.build();
   }
 
   // on the border, on a protected face, or a feature vertex that does not slide
@@ -198,10 +194,17 @@ public:
     return m;
   }
 
-  Point project(const Point& p, const Point& hint) const
+  // the closest point to p on the reference surface (or `old`, the position of v, if it is closer)
+  Point project(vertex_descriptor v, const Point& p, const Point& old)
   {
-    if(!tree) return p;
-    return tree->closest_point(p, hint);
+    if(surface.empty()) return p;
+    std::size_t t = get(hint, v);
+    if(t == 0) // a vertex created since: the hint of a neighbor
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+        if((t = get(hint, source(h, pm))) != 0) break;
+    const Point q = surface.closest_point(p, old, t);
+    put(hint, v, t);
+    return q;
   }
 
   // `iterations` Jacobi sweeps over the free vertices of `region` (in the given order); returns the
@@ -245,13 +248,14 @@ public:
       {
         const vertex_descriptor v = free[i];
         const Point old = get(vpm, v);
-        const Point np = feature_vertices.count(v) == 0 ? project(targets[i], old) : targets[i];
+        const Point np = feature_vertices.count(v) == 0 ? project(v, targets[i], old) : targets[i];
         if(np == old) continue;
-        const double before = min_quad_quality(v);
+        // kept if the incident quads stay above the floor, or else are not worse than before
         put(vpm, v, np);
         const double after = min_quad_quality(v);
-        if(after >= before || (after > 0 && after >= quality_floor)) ++accepted;
-        else put(vpm, v, old);
+        if(after > 0 && after >= quality_floor) { ++accepted; continue; }
+        put(vpm, v, old);
+        if(after >= min_quad_quality(v)) { put(vpm, v, np); ++accepted; }
       }
     }
     return accepted;

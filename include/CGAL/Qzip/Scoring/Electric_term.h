@@ -74,15 +74,10 @@ private:
   double energy(int q, typename boost::graph_traits<PolygonMesh>::vertex_descriptor at,
                 const Qzip_candidate<PolygonMesh>& c, Context& ctx) const
   {
-    const auto nb = ctx.nearest_singularities(at);
+    const auto nb = ctx.nearest_singularities(at, c.source, c.target, number_of_neighbors);
     double e = 0;
-    std::size_t k = 0;
     for(const auto& j : nb)
-    {
-      if(j.vertex == c.source || j.vertex == c.target) continue;
-      if(k++ == number_of_neighbors) break;
       e += double(q * charge(j.defect)) / double(j.distance);
-    }
     if(nb.feature_distance > 0 && nb.feature_distance < (std::numeric_limits<int>::max)())
       e += feature_weight / double(nb.feature_distance);
     return e;

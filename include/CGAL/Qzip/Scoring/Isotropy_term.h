@@ -19,28 +19,14 @@ namespace Qzip {
 
 namespace internal {
 
-// calls f(op, face, along, across) for each operation of the plan that acts on a quad next to the path:
-// the quad on the left of the path edge for RC and LS, on its right for LC and RS; `along` is the length
-// of the path edge and `across` the mean length of the two sides of the quad that leave the path.
+// calls f(op, face, along, across, area) for each operation of the plan that acts on a quad next to the
+// path: the quad on the left of the path edge for RC and LS, on its right for LC and RS; `along` is the
+// length of the path edge, `across` the mean length of the two sides of the quad that leave the path and
+// `area` the area of the quad (see `Scoring_context::strip_quads()`, which keeps them for the last plan).
 template <typename PolygonMesh, typename Context, typename F>
 void for_each_strip_quad(const Surgery_plan<PolygonMesh>& plan, const Context& ctx, F f)
 {
-  const PolygonMesh& pm = ctx.mesh();
-  for(std::size_t j = 0; j + 1 < plan.path.size(); ++j)
-  {
-    const Strip_operation op = plan.operations[j];
-    if(op == Strip_operation::NO_OPERATION) continue;
-    const auto vw = halfedge(plan.path[j], plan.path[j + 1], pm);
-    if(!vw.second) continue;
-    const bool left = op == Strip_operation::RIGHT_COLLAPSE || op == Strip_operation::LEFT_SPLIT;
-    const auto h = left ? vw.first : opposite(vw.first, pm);
-    if(is_border(h, pm) || !is_quad(h, pm)) continue;
-    const auto n = next(h, pm), p = prev(h, pm);
-    const double along = ctx.length(source(h, pm), target(h, pm));
-    const double across = 0.5 * (ctx.length(source(n, pm), target(n, pm)) + ctx.length(source(p, pm), target(p, pm)));
-    if(!(along > 0) || !(across > 0)) continue;
-    f(op, face(h, pm), along, across);
-  }
+  for(const auto& q : ctx.strip_quads(plan)) f(q.operation, q.face, q.along, q.across, q.area);
 }
 
 } // namespace internal
@@ -63,7 +49,7 @@ struct Isotropy_term
   {
     double s = 0;
     internal::for_each_strip_quad(*c.plan, ctx, [&](Strip_operation op, typename boost::graph_traits<PolygonMesh>::face_descriptor,
-                                                    double along, double across)
+                                                    double along, double across, double)
     {
       const double r = std::log(across / along);
       s += is_collapse(op) ? r : -r;

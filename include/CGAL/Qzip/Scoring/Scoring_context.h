@@ -11,8 +11,8 @@
 #include <CGAL/license/Qzip.h>
 
 #include <CGAL/Qzip/quad_operations.h>
+#include <CGAL/Qzip/surgery_plan.h>
 #include <CGAL/Qzip/internal/vertex_defect.h>
-#include <CGAL/Qzip/internal/rotation.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
@@ -50,13 +50,14 @@ What a scoring functor may ask about the mesh while candidates are scored. The o
 refreshes it before each batch; all answers describe the mesh as it was at the start of the batch
 (scoring never edits the mesh). Distances are graph distances in edges.
 
-At the start of each batch the context computes, in time linear in the size of the mesh, the
-`max_nearest()` closest singularities of every vertex (a breadth-first search from all singularities
-at once in which each vertex keeps the first `max_nearest()` distinct sources that reach it: these are
-exactly its closest ones, up to ties), the distance of every vertex to the border and the features, and
-the separatrices; `nearest_singularities()` is then a lookup, `distance_to_separatrix()` a search within
-three edges done once per vertex and batch. `distance()` runs bounded breadth-first searches, a few of
-which are kept.
+At the start of each batch the context computes, in time linear in the size of the mesh, the distance
+of every vertex to the border and the features and the separatrices. The closest singularities of a
+vertex (`nearest_singularities()`, at most `max_nearest_singularities`, ties broken by the position of
+the singularities) are found when first asked for in the batch, by a breadth-first search around the
+vertex that stops once they are known; the variant that skips two singularities and asks for only a few
+of them stops earlier. Both are kept for the batch, and across batches for the vertices whose search
+ball no surgery touched. `distance_to_separatrix()` is a search within three edges done once per vertex
+and batch. `distance()` runs bounded breadth-first searches, a few of which are kept.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`
 \tparam VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap the property maps of the optimizer
@@ -90,8 +91,7 @@ private:
   typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<int> >::type Int_map;
   typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<unsigned int> >::type Stamp_map;
 
-  // the labels of label_bfs(): K sources (vertex indices) per vertex, with their distances, apart so that
-  // the search for a duplicate source reads one short contiguous row
+  // K labels (vertex indices) per vertex, with their distances
   struct Labels { std::vector<int> source, distance; std::vector<unsigned char> count; };
 
   PolygonMesh& pm;
@@ -109,7 +109,35 @@ private:
   std::vector<unsigned char> cut, passable;
   std::vector<int> adjacency_begin, adjacency;
   std::vector<int> feature_dist;
-  Labels near_labels;
+  // closest singularities: the rank of each singular vertex in the order of begin_batch() (-1 if regular),
+  // and the labels of the vertices asked about in this batch (near_known: stamped with the epoch)
+  std::vector<int> ranks;
+  mutable Labels near_labels;
+  mutable std::vector<unsigned int> near_known, near_visit;
+  mutable std::vector<unsigned char> near_complete;
+  mutable unsigned int near_round = 0;
+  mutable std::vector<int> near_queue;
+  mutable std::vector<std::pair<int, int> > near_found;
+  // the closest singularities kept across batches: a search around a vertex only read the ball of
+  // `radius` edges around it, so its answer holds while no vertex of that ball is edited. The vertices
+  // and positions of the labels are checked when used: a descriptor may have been recycled, and an undone
+  // surgery gives back the same mesh with new descriptors.
+  struct Kept
+  {
+    vertex_descriptor owner;
+    Point position;
+    int radius;
+    bool complete;
+    std::size_t count;
+    vertex_descriptor label[max_nearest_singularities];
+    Point label_position[max_nearest_singularities];
+    int distance[max_nearest_singularities];
+  };
+  typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<std::size_t> >::type Kept_map;
+  Kept_map kept_index; // 1 + the index in `kept`, 0 for none
+  mutable std::vector<Kept> kept;
+  mutable std::vector<std::size_t> kept_free;
+  mutable int kept_radius = 0; // the largest radius of a kept search
   // separatrices: the singularities whose separatrices pass through each vertex (compressed rows), and,
   // computed when first asked for in a batch, the three closest of them within m_separatrix_radius edges
   std::vector<int> sep_begin, sep_owner;
@@ -123,19 +151,26 @@ private:
   int m_separatrix_radius = 3;
   double m_mean_face_area = 1;
 
+  // strip_quads() of the last plan, and the halfedges of the edges of the last path (found when first needed)
+  mutable bool strip_known = false;
+  mutable std::vector<vertex_descriptor> strip_path;
+  mutable std::vector<Strip_operation> strip_operations;
+  mutable std::vector<std::pair<halfedge_descriptor, bool> > strip_edges;
+  mutable std::vector<unsigned char> strip_edge_known;
+
   // a few breadth-first balls kept for distance()
   struct Slot { vertex_descriptor source; int radius; unsigned int epoch; Stamp_map stamp; Int_map dist; };
   std::vector<Slot> slots;
   std::size_t next_slot = 0;
   std::vector<vertex_descriptor> queue;
-  std::vector<std::pair<int, int> > frontier, next_frontier; // (vertex, label) pairs of label_bfs()
 
 public:
   /// \cond SKIP_IN_MANUAL
   Scoring_context(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm)
     : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm),
       stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
-      index_map(get(CGAL::dynamic_vertex_property_t<int>(), pm))
+      index_map(get(CGAL::dynamic_vertex_property_t<int>(), pm)),
+      kept_index(get(CGAL::dynamic_vertex_property_t<std::size_t>(), pm))
   {
     for(std::size_t i = 0; i < 4; ++i)
       slots.push_back(Slot{ GT::null_vertex(), -1, 0u, get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm),
@@ -143,6 +178,7 @@ public:
     for(vertex_descriptor v : vertices(pm))
     {
       put(stamp, v, 0u);
+      put(kept_index, v, 0);
       for(Slot& sl : slots) put(sl.stamp, v, 0u);
     }
     // geometric mean: the log-ratios of the sizing term then average to zero over the input
@@ -159,6 +195,58 @@ public:
 
   // refreshes everything; returns the singular vertices sorted by position.
   std::vector<vertex_descriptor> begin_batch()
+  {
+    for(const Kept& k : kept) put(kept_index, k.owner, 0);
+    kept.clear();
+    kept_free.clear();
+    kept_radius = 0;
+    return refresh();
+  }
+
+  // same, after a batch that edited (moved, or changed the neighbors of) the vertices `edited` and no
+  // other vertex, except by surgeries it undid: the closest singularities found in earlier batches are
+  // kept for the vertices farther from the edited ones than their search went.
+  std::vector<vertex_descriptor> begin_batch(const std::vector<vertex_descriptor>& edited)
+  {
+    std::vector<vertex_descriptor> singular = refresh();
+    if(kept.size() == kept_free.size()) return singular;
+    if(++near_round == 0) { std::fill(near_visit.begin(), near_visit.end(), 0u); near_round = 1; }
+    near_queue.clear();
+    std::vector<int> level;
+    for(vertex_descriptor v : edited)
+    {
+      const int i = index(v);
+      if(i < 0 || near_visit[std::size_t(i)] == near_round) continue;
+      near_visit[std::size_t(i)] = near_round;
+      near_queue.push_back(i);
+      level.push_back(0);
+    }
+    for(std::size_t q = 0; q < near_queue.size(); ++q)
+    {
+      const int u = near_queue[std::size_t(q)];
+      const std::size_t k = get(kept_index, by_index[std::size_t(u)]);
+      if(k != 0 && k <= kept.size() && kept[k - 1].owner == by_index[std::size_t(u)] && kept[k - 1].radius >= level[q])
+        forget(k);
+      if(level[q] >= kept_radius) continue;
+      for(const int* w = neighbors_begin(u); w != neighbors_end(u); ++w)
+      {
+        if(near_visit[std::size_t(*w)] == near_round) continue;
+        near_visit[std::size_t(*w)] = near_round;
+        near_queue.push_back(*w);
+        level.push_back(level[q] + 1);
+      }
+    }
+    return singular;
+  }
+
+private:
+  void forget(std::size_t k) const
+  {
+    put(kept_index, kept[k - 1].owner, 0);
+    kept_free.push_back(k - 1);
+  }
+
+  std::vector<vertex_descriptor> refresh()
   {
     ++epoch;
     clear_cache();
@@ -198,10 +286,16 @@ public:
       if(pa.y() != pb.y()) return pa.y() < pb.y();
       return pa.z() < pb.z();
     });
-    // closest singularities
-    std::vector<std::pair<int, int> > seeds;
-    for(vertex_descriptor v : singular) seeds.emplace_back(index(v), index(v));
-    label_bfs<max_nearest_singularities>(seeds, (std::numeric_limits<int>::max)(), near_labels);
+    // closest singularities: computed when first asked for in the batch
+    ranks.assign(by_index.size(), -1);
+    for(std::size_t r = 0; r < singular.size(); ++r) ranks[std::size_t(index(singular[r]))] = int(r);
+    near_labels.source.resize(by_index.size() * max_nearest_singularities);
+    near_labels.distance.resize(by_index.size() * max_nearest_singularities);
+    near_labels.count.resize(by_index.size());
+    near_known.assign(by_index.size(), 0u);
+    near_complete.resize(by_index.size());
+    near_visit.assign(by_index.size(), 0u);
+    near_round = 0;
     // distance to the border and the features
     feature_dist.assign(by_index.size(), (std::numeric_limits<int>::max)());
     std::vector<int> fqueue;
@@ -218,7 +312,7 @@ public:
       }
     }
     // separatrices
-    seeds.clear();
+    std::vector<std::pair<int, int> > seeds;
     trace_separatrices(singular, seeds);
     sep_begin.assign(by_index.size() + 1, 0);
     for(const auto& so : seeds) ++sep_begin[std::size_t(so.first) + 1];
@@ -235,7 +329,12 @@ public:
     return singular;
   }
 
-  void clear_cache() { for(Slot& sl : slots) sl.source = GT::null_vertex(); }
+public:
+  void clear_cache()
+  {
+    for(Slot& sl : slots) sl.source = GT::null_vertex();
+    strip_known = false;
+  }
   /// \endcond
 
   /// the mesh.
@@ -293,10 +392,33 @@ public:
     if(i < 0) return nb;
     nb.feature_distance = feature_dist[std::size_t(i)];
     const std::size_t K = max_nearest_singularities;
+    compute_nearest(i, -1, -1, max_nearest_singularities);
     for(std::size_t k = std::size_t(i) * K; k < std::size_t(i) * K + near_labels.count[std::size_t(i)]; ++k)
     {
       const int j = near_labels.source[k];
       if(j == i) continue;
+      nb.items[nb.size++] = Nearby{ by_index[std::size_t(j)], defects[std::size_t(j)], near_labels.distance[k] };
+    }
+    return nb;
+  }
+
+  /// the first `n` of the singularities of `nearest_singularities(v)` other than `x1` and `x2` (fewer if
+  /// it has fewer), and the distance from `v` to the closest border or feature vertex. Cheaper than
+  /// `nearest_singularities(v)` when `n` is small: the search around `v` stops once they are known.
+  Neighborhood nearest_singularities(vertex_descriptor v, vertex_descriptor x1, vertex_descriptor x2, std::size_t n) const
+  {
+    Neighborhood nb;
+    const int i = index(v);
+    if(i < 0) return nb;
+    nb.feature_distance = feature_dist[std::size_t(i)];
+    const int i1 = x1 == GT::null_vertex() ? -1 : index(x1), i2 = x2 == GT::null_vertex() ? -1 : index(x2);
+    n = (std::min)(n, max_nearest_singularities);
+    compute_nearest(i, i1, i2, n);
+    const std::size_t K = max_nearest_singularities;
+    for(std::size_t k = std::size_t(i) * K; k < std::size_t(i) * K + near_labels.count[std::size_t(i)] && nb.size < n; ++k)
+    {
+      const int j = near_labels.source[k];
+      if(j == i || j == i1 || j == i2) continue;
       nb.items[nb.size++] = Nearby{ by_index[std::size_t(j)], defects[std::size_t(j)], near_labels.distance[k] };
     }
     return nb;
@@ -358,6 +480,52 @@ public:
   }
 
   /// \cond SKIP_IN_MANUAL
+  // a quad that an operation of a plan acts on: the quad on the side of the path edge that the operation
+  // collapses or splits, the length `along` of the path edge and the mean length `across` of the two
+  // sides of the quad that leave the path
+  struct Strip_quad { Strip_operation operation; face_descriptor face; double along, across, area; };
+private:
+  mutable std::vector<Strip_quad> strip;
+public:
+
+  // the strip quads of `plan`, in path order (path edges without an operation, without a quad on that
+  // side, or of zero length are left out). The terms of a candidate ask for the same plan in turn, and
+  // the candidates of a source follow the same path: the quads of the last plan and the path edges of
+  // the last path are kept until `clear_cache()`.
+  const std::vector<Strip_quad>& strip_quads(const Surgery_plan<PolygonMesh>& plan) const
+  {
+    if(strip_known && plan.path == strip_path && plan.operations == strip_operations) return strip;
+    if(!strip_known || plan.path != strip_path)
+    {
+      strip_path = plan.path;
+      strip_edges.assign(plan.path.size(), std::make_pair(GT::null_halfedge(), false));
+      strip_edge_known.assign(plan.path.size(), 0);
+    }
+    strip_operations = plan.operations;
+    strip_known = true;
+    strip.clear();
+    for(std::size_t j = 0; j + 1 < plan.path.size(); ++j)
+    {
+      const Strip_operation op = plan.operations[j];
+      if(op == Strip_operation::NO_OPERATION) continue;
+      if(!strip_edge_known[j])
+      {
+        strip_edges[j] = halfedge(plan.path[j], plan.path[j + 1], pm);
+        strip_edge_known[j] = 1;
+      }
+      if(!strip_edges[j].second) continue;
+      const bool left = op == Strip_operation::RIGHT_COLLAPSE || op == Strip_operation::LEFT_SPLIT;
+      const halfedge_descriptor h = left ? strip_edges[j].first : opposite(strip_edges[j].first, pm);
+      if(is_border(h, pm) || !is_quad(h, pm)) continue;
+      const halfedge_descriptor n = next(h, pm), p = prev(h, pm);
+      const double along = length(source(h, pm), target(h, pm));
+      const double across = 0.5 * (length(source(n, pm), target(n, pm)) + length(source(p, pm), target(p, pm)));
+      if(!(along > 0) || !(across > 0)) continue;
+      strip.push_back(Strip_quad{ op, face(h, pm), along, across, face_area(face(h, pm)) });
+    }
+    return strip;
+  }
+
   // the mesh as it was at the start of the batch, by vertex index (-1: a vertex created since)
   int index(vertex_descriptor v) const { return get(stamp, v) == epoch ? get(index_map, v) : -1; }
   vertex_descriptor vertex(int i) const { return by_index[std::size_t(i)]; }
@@ -372,39 +540,133 @@ public:
 
 private:
 
-  // breadth-first search from all seeds (vertex, label) at once, level by level, in which each vertex keeps
-  // the first K distinct labels that reach it (with their distances), up to `max_distance`.
-  template <std::size_t K>
-  void label_bfs(const std::vector<std::pair<int, int> >& seeds, int max_distance,
-                 Labels& labels)
+  // the number of labels of vertex i other than i, x1 and x2 (indices, -1 for none)
+  std::size_t count_other_labels(int i, int x1, int x2) const
   {
-    labels.source.resize(by_index.size() * K);
-    labels.distance.resize(by_index.size() * K);
-    labels.count.assign(by_index.size(), 0);
-    int* const source = labels.source.data();
-    unsigned char* const count = labels.count.data();
-    auto add = [&](std::size_t i, int l, int d)
+    const std::size_t K = max_nearest_singularities;
+    std::size_t n = 0;
+    for(std::size_t k = std::size_t(i) * K; k < std::size_t(i) * K + near_labels.count[std::size_t(i)]; ++k)
     {
-      const std::size_t c = count[i];
-      if(c == K) return false;
-      const int* row = source + i * K;
-      for(std::size_t k = 0; k < c; ++k) if(row[k] == l) return false;
-      source[i * K + c] = l;
-      labels.distance[i * K + c] = d;
-      ++count[i];
-      return true;
-    };
-    frontier.clear();
-    for(const auto& s : seeds)
-      if(add(std::size_t(s.first), s.second, 0)) frontier.push_back(s);
-    for(int d = 0; !frontier.empty() && d < max_distance; ++d)
-    {
-      next_frontier.clear();
-      for(const auto& f : frontier)
-        for(const int* u = neighbors_begin(f.first); u != neighbors_end(f.first); ++u)
-          if(add(std::size_t(*u), f.second, d + 1)) next_frontier.emplace_back(*u, f.second);
-      frontier.swap(next_frontier);
+      const int j = near_labels.source[k];
+      if(j != i && j != x1 && j != x2) ++n;
     }
+    return n;
+  }
+
+  // makes the labels of vertex i hold at least n singularities other than i, x1 and x2, or all of its
+  // max_nearest_singularities closest ones: ties broken by their rank (the order of begin_batch()), by
+  // increasing distance. A breadth-first search from i, level by level, that stops at the first level
+  // where enough are known. It gives the same labels as a breadth-first search from all singularities at
+  // once, in rank order, in which each vertex keeps the first labels that reach it (a label among the
+  // closest of a vertex is among the closest of its predecessor on a shortest path), but it only costs
+  // the ball around i that holds them.
+  void compute_nearest(int i, int x1, int x2, std::size_t n) const
+  {
+    const std::size_t K = max_nearest_singularities;
+    if(near_known[std::size_t(i)] == epoch &&
+       (near_complete[std::size_t(i)] || count_other_labels(i, x1, x2) >= n)) return;
+    if(near_known[std::size_t(i)] != epoch && restore_nearest(i, x1, x2, n)) return;
+    if(++near_round == 0) { std::fill(near_visit.begin(), near_visit.end(), 0u); near_round = 1; }
+    near_known[std::size_t(i)] = epoch;
+    unsigned char& count = near_labels.count[std::size_t(i)];
+    count = 0;
+    std::size_t others = 0;
+    near_queue.assign(1, i);
+    near_visit[std::size_t(i)] = near_round;
+    std::size_t begin = 0;
+    int radius = 0;
+    for(std::size_t level = 0; begin < near_queue.size() && count < K && others < n; ++level)
+    {
+      radius = int(level);
+      const std::size_t end = near_queue.size();
+      near_found.clear();
+      std::size_t found_others = 0;
+      bool last_level = false; // the labels are known at the end of this level: no need for the next one
+      for(std::size_t q = begin; q < end; ++q)
+      {
+        const int u = near_queue[q];
+        if(ranks[std::size_t(u)] >= 0)
+        {
+          near_found.emplace_back(ranks[std::size_t(u)], u);
+          if(u != i && u != x1 && u != x2) ++found_others;
+          last_level = count + near_found.size() >= K || others + found_others >= n;
+        }
+        if(last_level) continue;
+        for(const int* w = neighbors_begin(u); w != neighbors_end(u); ++w)
+        {
+          if(near_visit[std::size_t(*w)] == near_round) continue;
+          near_visit[std::size_t(*w)] = near_round;
+          near_queue.push_back(*w);
+        }
+      }
+      std::sort(near_found.begin(), near_found.end());
+      for(std::size_t k = 0; k < near_found.size() && count < K; ++k, ++count)
+      {
+        const int j = near_found[k].second;
+        near_labels.source[std::size_t(i) * K + count] = j;
+        near_labels.distance[std::size_t(i) * K + count] = int(level);
+        if(j != i && j != x1 && j != x2) ++others;
+      }
+      begin = end;
+    }
+    near_complete[std::size_t(i)] = count == K || others < n; // else the ball around i has fewer
+    keep_nearest(i, radius);
+  }
+
+  // records the labels of vertex i, found by a search of `radius` edges, in `kept`
+  void keep_nearest(int i, int radius) const
+  {
+    const std::size_t K = max_nearest_singularities;
+    const vertex_descriptor v = by_index[std::size_t(i)];
+    std::size_t k = get(kept_index, v);
+    if(k == 0 || k > kept.size() || kept[k - 1].owner != v)
+    {
+      if(kept_free.empty()) { kept.emplace_back(); k = kept.size(); }
+      else { k = kept_free.back() + 1; kept_free.pop_back(); }
+      put(kept_index, v, k);
+    }
+    Kept& e = kept[k - 1];
+    e.owner = v;
+    e.position = get(vpm, v);
+    e.radius = radius;
+    e.complete = near_complete[std::size_t(i)] != 0;
+    e.count = near_labels.count[std::size_t(i)];
+    for(std::size_t j = 0; j < e.count; ++j)
+    {
+      e.label[j] = by_index[std::size_t(near_labels.source[std::size_t(i) * K + j])];
+      e.label_position[j] = get(vpm, e.label[j]);
+      e.distance[j] = near_labels.distance[std::size_t(i) * K + j];
+    }
+    kept_radius = (std::max)(kept_radius, radius);
+  }
+
+  // the labels of vertex i from `kept`, if they are known there, still hold (same vertex and labels at
+  // the same places, still singular) and suffice for the query
+  bool restore_nearest(int i, int x1, int x2, std::size_t n) const
+  {
+    const std::size_t K = max_nearest_singularities;
+    const vertex_descriptor v = by_index[std::size_t(i)];
+    const std::size_t k = get(kept_index, v);
+    if(k == 0 || k > kept.size()) return false;
+    const Kept& e = kept[k - 1];
+    if(e.owner != v || !(e.position == get(vpm, v))) return false;
+    std::size_t others = 0;
+    for(std::size_t j = 0; j < e.count; ++j)
+    {
+      const int l = index(e.label[j]);
+      if(l < 0 || ranks[std::size_t(l)] < 0 || !(e.label_position[j] == get(vpm, e.label[j]))) return false;
+      if(l != i && l != x1 && l != x2) ++others;
+    }
+    if(!e.complete && others < n) return false;
+    near_known[std::size_t(i)] = epoch;
+    near_complete[std::size_t(i)] = e.complete ? 1 : 0;
+    near_labels.count[std::size_t(i)] = static_cast<unsigned char>(e.count);
+    for(std::size_t j = 0; j < e.count; ++j)
+    {
+      near_labels.source[std::size_t(i) * K + j] = index(e.label[j]);
+      near_labels.distance[std::size_t(i) * K + j] = e.distance[j];
+    }
+    return true;
   }
 
   // the three closest distinct singularities whose separatrices pass within m_separatrix_radius edges of
@@ -444,24 +706,28 @@ private:
   }
 
   // straight edge lines from every interior singularity, through regular interior vertices, until a
-  // singular, border or feature vertex or `m_separatrix_length` edges; (vertex, owner) pairs.
+  // singular, border or feature vertex or `m_separatrix_length` edges; (vertex, owner) pairs. At a regular
+  // vertex the line leaves by the neighbor opposite to the one it came from (two places further in the
+  // neighbors, which are in rotation order).
   void trace_separatrices(const std::vector<vertex_descriptor>& singular,
                           std::vector<std::pair<int, int> >& out) const
   {
-    for(vertex_descriptor s : singular)
+    for(vertex_descriptor sv : singular)
     {
-      if(cut[std::size_t(index(s))]) continue;
-      for(halfedge_descriptor h0 : halfedges_around_target(halfedge(s, pm), pm))
+      const int s = index(sv);
+      if(cut[std::size_t(s)]) continue;
+      for(const int* first = neighbors_begin(s); first != neighbors_end(s); ++first)
       {
-        halfedge_descriptor o = opposite(h0, pm); // s -> w
+        int from = s, w = *first;
         for(int len = 0; len < m_separatrix_length; ++len)
         {
-          const vertex_descriptor w = target(o, pm);
           if(w == s) break;
-          out.emplace_back(index(w), index(s));
-          const std::size_t iw = std::size_t(index(w));
-          if(defects[iw] != 0 || cut[iw] || valence_at(int(iw)) != 4) break;
-          o = internal::rotate_outgoing(opposite(o, pm), 2, pm);
+          out.emplace_back(w, s);
+          if(defects[std::size_t(w)] != 0 || cut[std::size_t(w)] || valence_at(w) != 4) break;
+          const int* nb = neighbors_begin(w);
+          const int k = int(std::find(nb, nb + 4, from) - nb);
+          from = w;
+          w = nb[(k + 2) % 4];
         }
       }
     }

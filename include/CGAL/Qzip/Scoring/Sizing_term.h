@@ -33,10 +33,10 @@ struct Sizing_term
   {
     double s = 0;
     const double mean = ctx.mean_face_area();
-    internal::for_each_strip_quad(*c.plan, ctx, [&](Strip_operation op, typename boost::graph_traits<PolygonMesh>::face_descriptor f,
-                                                    double, double)
+    internal::for_each_strip_quad(*c.plan, ctx, [&](Strip_operation op, typename boost::graph_traits<PolygonMesh>::face_descriptor,
+                                                    double, double, double area)
     {
-      const double a = ctx.face_area(f) / mean;
+      const double a = area / mean;
       if(!(a > 0)) return;
       const double r = std::log(a);
       s += is_collapse(op) ? r : -r;

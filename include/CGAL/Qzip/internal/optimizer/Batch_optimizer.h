@@ -91,6 +91,7 @@ class Batch_optimizer
   std::vector<int> search_from, index_queue;
   unsigned int search_round = 0;
   std::vector<vertex_descriptor> singular;
+  std::vector<vertex_descriptor> edited_vertices; // the scars of the surgeries of the batch (see Scoring_context::begin_batch())
 
 public:
   Batch_optimizer(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
@@ -383,6 +384,7 @@ private:
       return;
     }
     for(vertex_descriptor v : scar) put(scar_stamp, v, batch_epoch);
+    edited_vertices.insert(edited_vertices.end(), scar.begin(), scar.end());
     mark(ball(r.touched_vertices, 2)); // new vertices may reuse the descriptors of removed ones
     stats.number_of_faces = stats.number_of_faces + r.number_of_splits - r.number_of_collapses;
     ++stats.number_of_surgeries;
@@ -442,7 +444,8 @@ private:
     exec_timer.stop();
     stats.execution_seconds += exec_timer.time();
 
-    if(edited) singular = ctx.begin_batch(); // else the mesh and the context are as they were
+    if(edited) singular = ctx.begin_batch(edited_vertices); // else the mesh and the context are as they were
+    edited_vertices.clear();
     const std::size_t before = stats.number_of_singularities;
     stats.number_of_singularities = singular.size();
     stats.number_of_faces = faces(pm).size();
