@@ -110,7 +110,7 @@ Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valen
   \cgalParamNEnd
   \cgalParamNBegin{stop_predicate}
     \cgalParamDescription{(Qzip) a model of `QzipStopPredicate`, asked before each batch}
-    \cgalParamDefault{`Default_stop_predicate()`: at most 200 batches, stop at the plateau}
+    \cgalParamDefault{`Default_stop_predicate()`: at most 200 batches, stop when they make no progress}
   \cgalParamNEnd
   \cgalParamNBegin{do_smooth}
     \cgalParamDescription{(Qzip) whether scars are smoothed; without smoothing, surgeries whose rough vertex
