@@ -39,8 +39,10 @@ struct Optimizer_statistics
   /// batches since `number_of_singularities` last decreased or `pairing_distance` last reached a new
   /// minimum (for the current number of singularities)
   std::size_t batches_without_progress = 0;
-  std::size_t surgeries_in_last_batch = 0;      ///< Q-zips kept in the last batch
-  std::size_t candidates_in_last_batch = 0;     ///< singularities that had an improving candidate in the last batch
+  std::size_t surgeries_in_last_batch = 0;      ///< Q-zips kept in the last batch (or round of the end game)
+  /// singularities that had an improving candidate in the last batch (after an end game that cancelled
+  /// singularities: the number of its Q-zips)
+  std::size_t candidates_in_last_batch = 0;
   std::size_t number_of_surgeries = 0;          ///< Q-zips kept so far
   std::size_t number_of_undone_surgeries = 0;   ///< Q-zips executed and undone (no valid smoothed shape)
   std::size_t number_of_failed_surgeries = 0;   ///< realizable plans that `execute_qzip()` rolled back

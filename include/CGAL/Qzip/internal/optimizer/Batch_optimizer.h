@@ -138,10 +138,12 @@ public:
     {
       while(!stop(stats))
         run_batch(false);
+      const std::size_t kept = stats.number_of_surgeries;
       if(!settings.end_game || !run_end_game()) break;
-      // the end game cancelled singularities: the batches may move on from there, if the stop predicate agrees
+      // The end game cancelled singularities: the batches go on from there if the stop predicate agrees,
+      // asked as after a batch that made progress with the surgeries of the end game.
       stats.batches_without_improvement = stats.batches_without_progress = 0;
-      stats.candidates_in_last_batch = 1;
+      stats.candidates_in_last_batch = stats.surgeries_in_last_batch = stats.number_of_surgeries - kept;
       if(stop(stats)) break;
     }
     stats.elapsed_seconds = timer.time();
@@ -580,8 +582,11 @@ private:
       if(a.score != b.score) return a.score < b.score;
       return point_less(a.source_point, b.source_point);
     });
-    stats.candidates_in_last_batch = chosen.size();
-    if(!end_game) chosen.resize((chosen.size() + 1) / 2);
+    if(!end_game)
+    {
+      stats.candidates_in_last_batch = chosen.size();
+      chosen.resize((chosen.size() + 1) / 2);
+    }
     score_timer.stop();
     stats.scoring_seconds += score_timer.time();
     if(!end_game) visitor.on_batch_scored(stats, chosen.size());
