@@ -11,7 +11,7 @@
 //                  predicted from the plan is the actual one (meshes below 20k quads)
 //   --mesh FILE    only this mesh (repeatable): no corpus, scaling series nor genus-3 test
 //   --trace        print every batch of the last run on stderr (singularities, faces, time)
-//   --max-batches N, --patience N  the parameters of the Default_stop_predicate of the runs (200, 10)
+//   --max-batches N, --patience N  the parameters of the Default_stop_predicate of the runs (200, 20)
 //   --count-stop   stop on No_improvement_stop_predicate (fewer singularities) instead of on progress
 //   --seed S       the random seed of the runs (default 0)
 // The summary line of each mesh on stderr also gives the median CPU time of the process (std::clock())
@@ -56,7 +56,7 @@ struct Measure_visitor : public Q::Default_optimizer_visitor<Mesh>
 };
 
 static bool trace = false;
-static std::size_t max_batches = 200, patience = 10;
+static std::size_t max_batches = 200, patience = 20;
 static unsigned int seed = 0;
 static bool count_stop = false;
 

@@ -66,7 +66,7 @@ best half is executed serially, skipping any surgery whose path or its one-ring 
 in this batch. After each surgery its scar is smoothed (see `smooth_quad_mesh()`); if the surgery leaves
 more inverted quads (scaled Jacobian `<= 0`) near its path than there were, the smoothing and the
 surgery are undone exactly. After the batch the union of its scars is smoothed again. The stop predicate
-is asked before every batch (by default: at most 200 batches, and stop when 10 batches in a row neither
+is asked before every batch (by default: at most 200 batches, and stop when 20 batches in a row neither
 lowered the number of singularities nor brought them closer to partners of the opposite sign, see
 `Default_stop_predicate`).
 

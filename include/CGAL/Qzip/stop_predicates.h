@@ -101,7 +101,7 @@ other, one edge per Q-zip, over many batches before they cancel (e.g. on finely 
 struct No_progress_stop_predicate
 {
   std::size_t patience;
-  explicit No_progress_stop_predicate(std::size_t patience = 10) : patience(patience) {}
+  explicit No_progress_stop_predicate(std::size_t patience = 20) : patience(patience) {}
   bool operator()(const Optimizer_statistics& s) const
   {
     if(s.batch == 0) return false;
@@ -151,13 +151,13 @@ Or_stop_predicate<StopPredicate1, StopPredicate2> stop_when_either(const StopPre
 
 the default stop predicate of `optimize_singularities()`: at most `max_batches` batches (default 200),
 and stop when the batches make no progress (`No_progress_stop_predicate` with patience `patience`,
-default 10: neither fewer singularities nor singularities closer to a partner of the opposite sign).
+default 20: neither fewer singularities nor singularities closer to a partner of the opposite sign).
 */
 struct Default_stop_predicate
 {
   std::size_t max_batches;
   std::size_t patience;
-  explicit Default_stop_predicate(std::size_t max_batches = 200, std::size_t patience = 10)
+  explicit Default_stop_predicate(std::size_t max_batches = 200, std::size_t patience = 20)
     : max_batches(max_batches), patience(patience) {}
   bool operator()(const Optimizer_statistics& s) const
   {
