@@ -68,16 +68,17 @@ class Batch_optimizer
   typedef Quad_smoother<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap, GeomTraits> Smoother;
   typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<unsigned int> >::type Stamp_map;
 
+  // a surgery of the end game, by the positions of its ends and its motion
+  typedef std::array<double, 7> Surgery_key;
+
   struct Scored
   {
     Surgery_plan<PolygonMesh> plan;
     double score;
     Point source_point;
     int predicted_cancellations;
+    Surgery_key key{}; // in the end game
   };
-
-  // a surgery of the end game, by the positions of its ends and its motion
-  typedef std::array<double, 7> Surgery_key;
   enum Outcome { KEPT, UNDONE, FAILED, SKIPPED };
 
   PolygonMesh& pm;
@@ -388,8 +389,10 @@ private:
     score_candidates(s, settings.end_game_neighbors_per_type, plan_np,
                      [&](const Qzip_candidate<PolygonMesh>& c, Surgery_plan<PolygonMesh>& plan, double score)
     {
-      if(score >= 0 || c.predicted_cancellations == 0 || rejected.count(key(plan)) != 0) return;
-      out.push_back(Scored{ std::move(plan), score, get(vpm, s), c.predicted_cancellations });
+      if(score >= 0 || c.predicted_cancellations == 0) return;
+      const Surgery_key k = key(plan);
+      if(rejected.count(k) != 0) return;
+      out.push_back(Scored{ std::move(plan), score, get(vpm, s), c.predicted_cancellations, k });
     });
   }
 
@@ -461,7 +464,6 @@ private:
     for(vertex_descriptor v : plan.path)
       if(get(op_stamp, v) == batch_epoch) { ++stats.number_of_skipped_surgeries; return SKIPPED; }
     if(!keeps_face_count(plan)) { ++stats.number_of_skipped_surgeries; return SKIPPED; }
-    const Surgery_key plan_key = require_decrease ? key(plan) : Surgery_key();
     // A surgery only removes vertices within three edges of its path (the far corners of the clean-up);
     // the vertices at distance four are never touched: they stay alive through an undo and lead back
     // to the re-created vertices, whose descriptors are new (or recycled with reset properties).
@@ -506,7 +508,7 @@ private:
     {
       ++stats.number_of_failed_surgeries;
       mark_after_undo();
-      if(require_decrease) rejected.insert(plan_key);
+      if(require_decrease) rejected.insert(cand.key);
       return FAILED;
     }
 
@@ -532,7 +534,7 @@ private:
       mark_after_undo();
       ++stats.number_of_undone_surgeries;
       visitor.on_undo(plan);
-      if(require_decrease) rejected.insert(plan_key);
+      if(require_decrease) rejected.insert(cand.key);
       return UNDONE;
     }
     for(vertex_descriptor v : scar) put(scar_stamp, v, batch_epoch);
