@@ -71,11 +71,11 @@ lowered the number of singularities nor brought them closer to partners of the o
 `Default_stop_predicate`).
 
 When the stop predicate says stop, an end game follows: in rounds, every singularity that can start a
-Q-zip (not a random half) tries all its improving candidates whose predicted landings cancel singularities
-(see `Qzip_candidate`; with its six closest partners of each type), those predicting the most
-cancellations first. Each is executed and smoothed as above and kept only if, in addition, the number of
-singular vertices within four edges of its path dropped; otherwise it is undone exactly and not tried
-again. Rounds go on while they try surgeries (at most 50). If the end game cancelled singularities, the
+Q-zip and has a singularity of the opposite sign within two edges (not a random half) tries all its
+improving candidates whose predicted landings cancel singularities (see `Qzip_candidate`), those
+predicting the most cancellations first. Each is executed and smoothed as above and kept only if, in
+addition, the number of singular vertices within four edges of its path dropped; otherwise it is undone
+exactly and not tried again. Rounds go on while they try surgeries (at most 10). If the end game cancelled singularities, the
 batches resume when the stop predicate agrees (it is asked as after a batch that made progress), so a
 `Batch_count_stop_predicate` still bounds the number of batches; end-game rounds are counted apart
 (`Optimizer_statistics::end_game_rounds`) and not reported to the visitor's `on_batch_finished()`.

@@ -48,10 +48,9 @@ struct Optimizer_settings
   double face_count_tolerance = 0.1;
   unsigned int seed = 0;
   std::size_t neighbors_per_type = 3;
-  std::size_t end_game_neighbors_per_type = 6;
   double quality_floor = 0.1;
   bool end_game = true;
-  std::size_t max_end_game_rounds = 50;
+  std::size_t max_end_game_rounds = 10;
 };
 
 // The multiple-choice batches of the paper's Sec. 4.1 (see optimize_singularities()).
@@ -232,6 +231,18 @@ private:
     return std::make_pair(n, q);
   }
 
+  // whether a singularity of the sign opposite to that of s lies within `radius` edges of s
+  bool has_opposite_within(vertex_descriptor s, int radius) const
+  {
+    const int d = ctx.defect(s);
+    for(const auto& j : ctx.nearest_singularities(s))
+    {
+      if(j.distance > radius) break;
+      if(j.defect * d < 0) return true;
+    }
+    return false;
+  }
+
   // see Optimizer_statistics::pairing_distance (on the context, just refreshed)
   std::size_t pairing_distance() const
   {
@@ -250,8 +261,8 @@ private:
 
   // breadth-first search from s through passable vertices (on the mesh as it was at the start of the
   // batch, by vertex index): the closest singularities of each type that can end a surgery
-  // (`k` of each), and the border/feature singularities met before.
-  std::vector<std::vector<vertex_descriptor> > partner_paths(vertex_descriptor s, std::size_t k)
+  // (`neighbors_per_type` of each), and the border/feature singularities met before.
+  std::vector<std::vector<vertex_descriptor> > partner_paths(vertex_descriptor s)
   {
     const int is = ctx.index(s);
     if(search_visit.size() < ctx.number_of_vertices())
@@ -265,6 +276,7 @@ private:
     search_visit[std::size_t(is)] = search_round;
     search_from[std::size_t(is)] = is;
     std::size_t n3 = 0, n5 = 0, others = 0;
+    const std::size_t k = settings.neighbors_per_type;
     std::vector<int> partners;
     for(std::size_t i = 0; i < index_queue.size(); ++i)
     {
@@ -320,13 +332,13 @@ private:
            std::abs(fafter - f0) < std::abs(fnow - f0);
   }
 
-  // scores the candidates of source s (the four motions along the paths to its closest partners, `k` of
-  // each type) and hands each realizable one that keeps the face count to `handle(candidate, plan, score)`,
-  // which may take the plan
+  // scores the candidates of source s (the four motions along the paths to its closest partners) and
+  // hands each realizable one that keeps the face count to `handle(candidate, plan, score)`, which may
+  // take the plan
   template <typename NP, typename Handler>
-  void score_candidates(vertex_descriptor s, std::size_t k, const NP& plan_np, const Handler& handle)
+  void score_candidates(vertex_descriptor s, const NP& plan_np, const Handler& handle)
   {
-    const auto paths = partner_paths(s, k);
+    const auto paths = partner_paths(s);
     for(const auto& path : paths)
     {
       const vertex_descriptor t = path.back();
@@ -359,7 +371,7 @@ private:
   bool best_candidate(vertex_descriptor s, const NP& plan_np, Scored& best)
   {
     bool found = false;
-    score_candidates(s, settings.neighbors_per_type, plan_np,
+    score_candidates(s, plan_np,
                      [&](const Qzip_candidate<PolygonMesh>& c, Surgery_plan<PolygonMesh>& plan, double score)
     {
       if(score < 0 && (!found || score < best.score))
@@ -381,12 +393,12 @@ private:
     return Surgery_key{{ a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), double(int(plan.initial_operation)) }};
   }
 
-  // every improving candidate of s whose landings predict a cancellation (for the end game), with the
-  // closest `end_game_neighbors_per_type` partners of each type, except those already rejected
+  // every improving candidate of s whose landings predict a cancellation (for the end game), except
+  // those already rejected
   template <typename NP>
   void cancelling_candidates(vertex_descriptor s, const NP& plan_np, std::vector<Scored>& out)
   {
-    score_candidates(s, settings.end_game_neighbors_per_type, plan_np,
+    score_candidates(s, plan_np,
                      [&](const Qzip_candidate<PolygonMesh>& c, Surgery_plan<PolygonMesh>& plan, double score)
     {
       if(score >= 0 || c.predicted_cancellations == 0) return;
@@ -546,9 +558,10 @@ private:
     return KEPT;
   }
 
-  // One batch (Sec. 4.1), or one round of the end game: every singularity that can start a surgery tries
-  // all its improving candidates predicted to cancel singularities, best predictions first, and a
-  // surgery is kept only if the singularities near its path are actually fewer.
+  // One batch (Sec. 4.1), or one round of the end game: every singularity that can start a surgery and
+  // has one of the opposite sign within two edges (a landing that cancels is next to the source or to
+  // the target) tries all its improving candidates predicted to cancel singularities, best predictions
+  // first, and a surgery is kept only if the singularities near its path are actually fewer.
   void run_batch(bool end_game)
   {
     ++batch_epoch;
@@ -573,7 +586,11 @@ private:
     std::vector<Scored> chosen;
     for(vertex_descriptor s : sources)
     {
-      if(end_game) { cancelling_candidates(s, plan_np, chosen); continue; }
+      if(end_game)
+      {
+        if(has_opposite_within(s, 2)) cancelling_candidates(s, plan_np, chosen);
+        continue;
+      }
       Scored best;
       if(best_candidate(s, plan_np, best)) chosen.push_back(std::move(best));
     }
