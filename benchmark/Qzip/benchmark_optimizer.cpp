@@ -4,12 +4,16 @@
 //
 // usage: benchmark_optimizer [--corpus DIR] [--runs R] [--max-level L] [--skip-corpus] [--skip-large]
 //                            [--skip-genus3] [--measure] [--mesh FILE]... [--trace]
+//                            [--max-batches N] [--patience N] [--count-stop] [--seed S]
 //   --runs R       runs per mesh below 100k quads, the median time is reported (default 3)
 //   --max-level L  Catmull-Clark levels of the scaling series (default 4: ~1M quads)
 //   --measure      recount the singularities after every surgery (slow) to measure how often the change
 //                  predicted from the plan is the actual one (meshes below 20k quads)
 //   --mesh FILE    only this mesh (repeatable): no corpus, scaling series nor genus-3 test
 //   --trace        print every batch of the last run on stderr (singularities, faces, time)
+//   --max-batches N, --patience N  the parameters of the Default_stop_predicate of the runs (200, 20)
+//   --count-stop   stop on No_improvement_stop_predicate (fewer singularities) instead of on progress
+//   --seed S       the random seed of the runs (default 0)
 // The summary line of each mesh on stderr also gives the median CPU time of the process (std::clock())
 // during optimize_singularities(), less sensitive than wall time to other jobs on the machine.
 
@@ -52,13 +56,27 @@ struct Measure_visitor : public Q::Default_optimizer_visitor<Mesh>
 };
 
 static bool trace = false;
+static std::size_t max_batches = 200, patience = 20;
+static unsigned int seed = 0;
+static bool count_stop = false;
+
+// the stop predicate of the runs: the default one with the parameters given on the command line, or
+// (--count-stop) the same with No_improvement_stop_predicate (progress = fewer singularities only)
+struct Bench_stop
+{
+  bool operator()(const Q::Optimizer_statistics& s) const
+  {
+    if(count_stop) return s.batch >= max_batches || Q::No_improvement_stop_predicate(patience)(s);
+    return Q::Default_stop_predicate(max_batches, patience)(s);
+  }
+};
 
 struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
 {
   void on_batch_finished(const Q::Optimizer_statistics& s)
   {
     std::cerr << "    batch " << s.batch << ": " << s.number_of_singularities << " singularities, " << s.number_of_faces
-              << " faces, " << s.surgeries_in_last_batch << " surgeries, " << s.elapsed_seconds << " s (scoring "
+              << " faces, pairing distance " << s.pairing_distance << ", " << s.surgeries_in_last_batch << " surgeries, " << s.elapsed_seconds << " s (scoring "
               << s.scoring_seconds << ", execution " << s.execution_seconds << ")" << std::endl;
   }
 };
@@ -104,9 +122,11 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
     t.start();
     Trace_visitor tracer;
     if(trace && i + 1 == runs)
-      row.stats = Q::optimize_singularities(m, CGAL::parameters::random_seed(0).visitor(std::ref(tracer)));
+      row.stats = Q::optimize_singularities(m, Q::parameters::stop_predicate(Bench_stop(),
+                                                   CGAL::parameters::random_seed(seed).visitor(std::ref(tracer))));
     else
-      row.stats = Q::optimize_singularities(m, CGAL::parameters::random_seed(0));
+      row.stats = Q::optimize_singularities(m, Q::parameters::stop_predicate(Bench_stop(),
+                                                   CGAL::parameters::random_seed(seed)));
     t.stop();
     times.push_back(t.time());
     cpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
@@ -119,7 +139,7 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
         copy_mesh(pre, mm);
         Measure_visitor vis;
         vis.mesh = &mm;
-        Q::optimize_singularities(mm, CGAL::parameters::random_seed(0).visitor(std::ref(vis)));
+        Q::optimize_singularities(mm, CGAL::parameters::random_seed(seed).visitor(std::ref(vis)));
         row.exact = std::to_string(vis.exact) + "/" + std::to_string(vis.surgeries);
       }
     }
@@ -128,7 +148,8 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
   std::sort(cpu.begin(), cpu.end());
   row.seconds = times[times.size() / 2];
   std::cerr << "  " << name << ": " << singular(row.before) << " -> " << singular(row.after) << " singularities, "
-            << row.before.number_of_faces << " -> " << row.after.number_of_faces << " faces, " << fmt(row.seconds) << " s (CPU " << fmt(cpu[cpu.size() / 2]) << " s)"
+            << row.before.number_of_faces << " -> " << row.after.number_of_faces << " faces, " << row.stats.batch << " batches + " << row.stats.end_game_rounds << " end-game rounds, "
+            << fmt(row.seconds) << " s (CPU " << fmt(cpu[cpu.size() / 2]) << " s)"
             << std::endl;
   return row;
 }
@@ -207,13 +228,17 @@ int main(int argc, char** argv)
     else if(a == "--skip-genus3") skip_genus3 = true;
     else if(a == "--measure") measure = true;
     else if(a == "--trace") trace = true;
+    else if(a == "--max-batches" && i + 1 < argc) max_batches = std::size_t(std::atoi(argv[++i]));
+    else if(a == "--patience" && i + 1 < argc) patience = std::size_t(std::atoi(argv[++i]));
+    else if(a == "--count-stop") count_stop = true;
+    else if(a == "--seed" && i + 1 < argc) seed = unsigned(std::atoi(argv[++i]));
     else if(a == "--mesh" && i + 1 < argc) meshes.push_back(argv[++i]);
     else { std::cerr << "error: unknown argument '" << a << "'" << std::endl; return EXIT_FAILURE; }
   }
 
   if(!meshes.empty())
   {
-    std::cout << "\n### Selected meshes (default parameters, seed 0, median of " << runs << " runs)\n\n";
+    std::cout << "\n### Selected meshes (default parameters, seed " << seed << ", median of " << runs << " runs)\n\n";
     print_header(measure);
     for(const std::string& f : meshes)
     {
@@ -230,7 +255,7 @@ int main(int argc, char** argv)
       std::cout << "corpus not found at " << corpus << ": skipped\n";
     else
     {
-      std::cout << "\n### Shared corpus (default parameters, seed 0, median of " << runs << " runs)\n\n";
+      std::cout << "\n### Shared corpus (default parameters, seed " << seed << ", median of " << runs << " runs)\n\n";
       print_header(measure);
       for(const std::string& f : shared_corpus_files())
       {

@@ -213,7 +213,7 @@ int main(int argc, char** argv)
   if(batches > 0)
     stats = Q::optimize_singularities(mesh, Q::parameters::combine(common, Q::parameters::do_smooth(smooth),
               Q::parameters::stop_predicate(Q::stop_when_either(Q::Batch_count_stop_predicate(batches),
-                                                                Q::No_improvement_stop_predicate()))));
+                                                                Q::No_progress_stop_predicate()))));
   else
     stats = Q::optimize_singularities(mesh, Q::parameters::combine(common, Q::parameters::do_smooth(smooth)));
   timer.stop();

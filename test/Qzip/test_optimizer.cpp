@@ -347,6 +347,58 @@ void test_protection_and_features(const std::string& fandisk)
 }
 
 // the shared corpus, when present: invariants on a few small meshes, both mesh types on one of them
+// The stop predicates on progress, and the end game: after a stop, every surgery it keeps was predicted
+// to cancel singularities and did (each one lowers the count), and it leaves a valid mesh.
+void test_end_game()
+{
+  Q::Optimizer_statistics st;
+  st.batch = 5;
+  st.candidates_in_last_batch = 3;
+  st.batches_without_improvement = 9;
+  st.batches_without_progress = 2;
+  assert(!Q::No_progress_stop_predicate(3)(st) && Q::No_improvement_stop_predicate(3)(st));
+  assert(!Q::Default_stop_predicate(200, 3)(st) && Q::Default_stop_predicate(5, 3)(st));
+  st.batches_without_progress = 3;
+  assert(Q::No_progress_stop_predicate(3)(st));
+  st.batches_without_progress = 0;
+  st.candidates_in_last_batch = 0;
+  assert(Q::No_progress_stop_predicate(3)(st));
+
+  std::size_t with_end_game = 0;
+  for(unsigned int seed = 0; seed < 4; ++seed)
+  {
+    Surface_mesh m;
+    make_cc_sphere(m, 2);
+    const long chi = euler_characteristic(m);
+    struct Visitor : public Q::Default_optimizer_visitor<Surface_mesh>
+    {
+      std::size_t after_batches = 0, surgeries_in_batches = 0, batches = 0, predicted_in_end_game = 0;
+      void on_batch_finished(const Q::Optimizer_statistics& s)
+      {
+        ++batches;
+        after_batches = s.number_of_singularities;
+        surgeries_in_batches = s.number_of_surgeries;
+      }
+      void on_surgery(const Q::Surgery_plan<Surface_mesh>&, double score, int predicted)
+      {
+        assert(score < 0);
+        if(batches == 6) { assert(predicted < 0); ++predicted_in_end_game; } // after the last batch: the end game
+      }
+    } vis;
+    const auto s = Q::optimize_singularities(m, Q::parameters::stop_predicate(Q::Batch_count_stop_predicate(6),
+                                                   CGAL::parameters::random_seed(seed).visitor(std::ref(vis))));
+    check_result(m, chi, s);
+    assert(s.batch == 6 && vis.batches == 6 && s.end_game_rounds > 0);
+    const std::size_t kept = s.number_of_surgeries - vis.surgeries_in_batches;
+    assert(kept == vis.predicted_in_end_game);
+    assert(s.number_of_singularities + kept <= vis.after_batches);
+    if(kept > 0) ++with_end_game;
+    std::cout << "end game (seed " << seed << "): " << vis.after_batches << " -> " << s.number_of_singularities
+              << " singularities after 6 batches, " << kept << " surgeries in " << s.end_game_rounds << " rounds" << std::endl;
+  }
+  assert(with_end_game > 0);
+}
+
 void test_corpus()
 {
   const std::string dir = shared_corpus_dir("test_optimizer");
@@ -382,6 +434,7 @@ int main(int argc, char** argv)
   const std::string fandisk = argc > 1 ? argv[1] : "data/pmp_fandisk_quads.off";
   test_subdivision_sphere();
   test_policies();
+  test_end_game();
   test_feature_sliding(fandisk);
   test_protection_and_features(fandisk);
   test_corpus();

@@ -37,7 +37,8 @@ struct Default_optimizer_visitor
   void on_surgery(const Surgery_plan<PolygonMesh>&, double /*score*/, int /*predicted_change*/) {}
   /// called after a surgery was executed and then undone because no valid quad shape was found.
   void on_undo(const Surgery_plan<PolygonMesh>&) {}
-  /// called after each batch (and its smoothing): `s.batch`, `s.number_of_singularities`, `s.elapsed_seconds`.
+  /// called after each batch (and its smoothing): `s.batch`, `s.number_of_singularities`, `s.elapsed_seconds`;
+  /// not after the rounds of the end game (whose kept surgeries are reported by `on_surgery()`).
   void on_batch_finished(const Optimizer_statistics&) {}
   /// called once at the end.
   void on_finished(const Optimizer_statistics&) {}

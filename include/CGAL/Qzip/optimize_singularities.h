@@ -66,7 +66,19 @@ best half is executed serially, skipping any surgery whose path or its one-ring 
 in this batch. After each surgery its scar is smoothed (see `smooth_quad_mesh()`); if the surgery leaves
 more inverted quads (scaled Jacobian `<= 0`) near its path than there were, the smoothing and the
 surgery are undone exactly. After the batch the union of its scars is smoothed again. The stop predicate
-is asked before every batch.
+is asked before every batch (by default: at most 200 batches, and stop when 20 batches in a row neither
+lowered the number of singularities nor brought them closer to partners of the opposite sign, see
+`Default_stop_predicate`).
+
+When the stop predicate says stop, an end game follows: in rounds, every singularity that can start a
+Q-zip and has a singularity of the opposite sign within two edges (not a random half) tries all its
+improving candidates whose predicted landings cancel singularities (see `Qzip_candidate`), those
+predicting the most cancellations first. Each is executed and smoothed as above and kept only if, in
+addition, the number of singular vertices within four edges of its path dropped; otherwise it is undone
+exactly and not tried again. Rounds go on while they try surgeries (at most 10). If the end game cancelled singularities, the
+batches resume when the stop predicate agrees (it is asked as after a batch that made progress), so a
+`Batch_count_stop_predicate` still bounds the number of batches; end-game rounds are counted apart
+(`Optimizer_statistics::end_game_rounds`) and not reported to the visitor's `on_batch_finished()`.
 
 Since a Q-zip never creates a singularity (`execute_qzip()` rolls back otherwise), the number of
 singularities never grows. No surgery touches a constrained edge or a protected face, and the border only
@@ -110,7 +122,7 @@ Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valen
   \cgalParamNEnd
   \cgalParamNBegin{stop_predicate}
     \cgalParamDescription{(Qzip) a model of `QzipStopPredicate`, asked before each batch}
-    \cgalParamDefault{`Default_stop_predicate()`: at most 200 batches, stop at the plateau}
+    \cgalParamDefault{`Default_stop_predicate()`: at most 200 batches, stop when they make no progress}
   \cgalParamNEnd
   \cgalParamNBegin{do_smooth}
     \cgalParamDescription{(Qzip) whether scars are smoothed; without smoothing, surgeries whose rough vertex

@@ -32,12 +32,22 @@ struct Optimizer_statistics
   std::size_t initial_number_of_faces = 0;
   std::size_t number_of_faces = 0;              ///< now
   std::size_t batches_without_improvement = 0;  ///< batches since `number_of_singularities` last decreased
-  std::size_t surgeries_in_last_batch = 0;      ///< Q-zips kept in the last batch
-  std::size_t candidates_in_last_batch = 0;     ///< singularities that had an improving candidate in the last batch
+  /// the sum, over the singularities, of the graph distance (in edges) to the closest singularity of the
+  /// opposite sign among the few closest ones (see `Scoring_context::nearest_singularities()`; a singularity
+  /// with none among them counts for 0): how far the singularities still are from a cancellation
+  std::size_t pairing_distance = 0;
+  /// batches since `number_of_singularities` last decreased or `pairing_distance` last reached a new
+  /// minimum (for the current number of singularities)
+  std::size_t batches_without_progress = 0;
+  std::size_t surgeries_in_last_batch = 0;      ///< Q-zips kept in the last batch (or round of the end game)
+  /// singularities that had an improving candidate in the last batch (after an end game that cancelled
+  /// singularities: the number of its Q-zips)
+  std::size_t candidates_in_last_batch = 0;
   std::size_t number_of_surgeries = 0;          ///< Q-zips kept so far
   std::size_t number_of_undone_surgeries = 0;   ///< Q-zips executed and undone (no valid smoothed shape)
   std::size_t number_of_failed_surgeries = 0;   ///< realizable plans that `execute_qzip()` rolled back
   std::size_t number_of_skipped_surgeries = 0;  ///< chosen plans skipped because their region was already operated on
+  std::size_t end_game_rounds = 0;              ///< rounds of the end game (see `optimize_singularities()`), not counted in `batch`
   double elapsed_seconds = 0;                   ///< wall-clock time since the start of the optimization
   double scoring_seconds = 0;                   ///< part of it spent finding and scoring candidates
   double execution_seconds = 0;                 ///< part of it spent executing, smoothing and checking surgeries
@@ -82,6 +92,27 @@ struct No_improvement_stop_predicate
 \ingroup PkgQzipOptimizer
 \cgalModels `QzipStopPredicate`
 
+stops when the optimization has made no progress during the last `patience` batches: the number of
+singularities did not decrease and the singularities did not get closer to opposite-sign partners
+(`Optimizer_statistics::pairing_distance` reached no new minimum), or when a batch kept no surgery at all.
+Unlike `No_improvement_stop_predicate`, it lets singularities that are far apart travel towards each
+other, one edge per Q-zip, over many batches before they cancel (e.g. on finely subdivided meshes).
+*/
+struct No_progress_stop_predicate
+{
+  std::size_t patience;
+  explicit No_progress_stop_predicate(std::size_t patience = 20) : patience(patience) {}
+  bool operator()(const Optimizer_statistics& s) const
+  {
+    if(s.batch == 0) return false;
+    return s.batches_without_progress >= patience || s.candidates_in_last_batch == 0;
+  }
+};
+
+/*!
+\ingroup PkgQzipOptimizer
+\cgalModels `QzipStopPredicate`
+
 stops when the elapsed time exceeds a budget (in seconds). The current batch is always finished.
 */
 struct Time_budget_stop_predicate
@@ -119,17 +150,18 @@ Or_stop_predicate<StopPredicate1, StopPredicate2> stop_when_either(const StopPre
 \cgalModels `QzipStopPredicate`
 
 the default stop predicate of `optimize_singularities()`: at most `max_batches` batches (default 200),
-and stop at the plateau (`No_improvement_stop_predicate` with patience `patience`, default 10).
+and stop when the batches make no progress (`No_progress_stop_predicate` with patience `patience`,
+default 20: neither fewer singularities nor singularities closer to a partner of the opposite sign).
 */
 struct Default_stop_predicate
 {
   std::size_t max_batches;
   std::size_t patience;
-  explicit Default_stop_predicate(std::size_t max_batches = 200, std::size_t patience = 10)
+  explicit Default_stop_predicate(std::size_t max_batches = 200, std::size_t patience = 20)
     : max_batches(max_batches), patience(patience) {}
   bool operator()(const Optimizer_statistics& s) const
   {
-    return Batch_count_stop_predicate(max_batches)(s) || No_improvement_stop_predicate(patience)(s);
+    return Batch_count_stop_predicate(max_batches)(s) || No_progress_stop_predicate(patience)(s);
   }
 };
 

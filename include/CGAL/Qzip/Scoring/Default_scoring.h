@@ -16,6 +16,7 @@
 #include <CGAL/Qzip/Scoring/Isotropy_term.h>
 #include <CGAL/Qzip/Scoring/Sizing_term.h>
 #include <CGAL/Qzip/Scoring/Separatrix_term.h>
+#include <CGAL/Qzip/Scoring/Pairing_term.h>
 
 namespace CGAL {
 namespace Qzip {
@@ -25,7 +26,9 @@ namespace Qzip {
 \cgalModels `QzipScoringFunctor`
 
 The default scoring of `optimize_singularities()`: the weighted sum of the paper's four terms (Sec. 4.1),
-`Electric_term`, `Isotropy_term`, `Sizing_term` and `Separatrix_term`.
+`Electric_term`, `Isotropy_term`, `Sizing_term` and `Separatrix_term`, and of `Pairing_term`, a pull
+towards the closest singularity of the opposite sign that does not fade with the distance (without it,
+singularities a few tens of edges apart, as on finely subdivided meshes, hardly move towards each other).
 
 <b>The concept `QzipScoringFunctor`.</b> A scoring functor is a copyable function object with
 \code
@@ -45,10 +48,12 @@ struct Default_scoring
   double isotropy_weight = 0.02;  ///< weight of `Isotropy_term`
   double sizing_weight = 0.02;    ///< weight of `Sizing_term`
   double separatrix_weight = 0.02;///< weight of `Separatrix_term`
+  double pairing_weight = 0.3;    ///< weight of `Pairing_term`
   Electric_term electric;         ///< the electric term and its parameters
   Isotropy_term isotropy;         ///< the isotropy term
   Sizing_term sizing;             ///< the sizing term
   Separatrix_term separatrix;     ///< the separatrix term and its parameters
+  Pairing_term pairing;           ///< the pairing term
 
   template <typename PolygonMesh, typename Context>
   double operator()(const Qzip_candidate<PolygonMesh>& c, Context& ctx) const
@@ -58,6 +63,7 @@ struct Default_scoring
     if(isotropy_weight != 0) s += isotropy_weight * isotropy(c, ctx);
     if(sizing_weight != 0) s += sizing_weight * sizing(c, ctx);
     if(separatrix_weight != 0) s += separatrix_weight * separatrix(c, ctx);
+    if(pairing_weight != 0) s += pairing_weight * pairing(c, ctx);
     return s;
   }
 };

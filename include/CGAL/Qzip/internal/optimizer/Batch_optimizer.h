@@ -17,9 +17,11 @@
 #include <CGAL/Qzip/Optimizer_visitor_base.h>
 #include <CGAL/Qzip/Scoring/Qzip_candidate.h>
 #include <CGAL/Qzip/Scoring/Scoring_context.h>
+#include <CGAL/Qzip/internal/vertex_defect.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
 
@@ -27,8 +29,10 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -45,6 +49,8 @@ struct Optimizer_settings
   unsigned int seed = 0;
   std::size_t neighbors_per_type = 3;
   double quality_floor = 0.1;
+  bool end_game = true;
+  std::size_t max_end_game_rounds = 10;
 };
 
 // The multiple-choice batches of the paper's Sec. 4.1 (see optimize_singularities()).
@@ -61,13 +67,18 @@ class Batch_optimizer
   typedef Quad_smoother<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap, GeomTraits> Smoother;
   typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<unsigned int> >::type Stamp_map;
 
+  // a surgery of the end game, by the positions of its ends and its motion
+  typedef std::array<double, 7> Surgery_key;
+
   struct Scored
   {
     Surgery_plan<PolygonMesh> plan;
     double score;
     Point source_point;
     int predicted_cancellations;
+    Surgery_key key{}; // in the end game
   };
+  enum Outcome { KEPT, UNDONE, FAILED, SKIPPED };
 
   PolygonMesh& pm;
   VertexPointMap vpm;
@@ -84,14 +95,17 @@ class Batch_optimizer
   Optimizer_statistics stats;
   CGAL::Real_timer timer;
 
-  Stamp_map search_stamp, op_stamp, scar_stamp;
-  unsigned int search_epoch = 0, batch_epoch = 0;
+  Stamp_map search_stamp, op_stamp, scar_stamp, outer_stamp;
+  unsigned int search_epoch = 0, batch_epoch = 0, outer_epoch = 0;
   // partner search on the context's arrays
   std::vector<unsigned int> search_visit;
   std::vector<int> search_from, index_queue;
   unsigned int search_round = 0;
   std::vector<vertex_descriptor> singular;
   std::vector<vertex_descriptor> edited_vertices; // the scars of the surgeries of the batch (see Scoring_context::begin_batch())
+  std::size_t best_pairing_distance = 0; // the smallest pairing distance since the count last decreased
+  std::set<Surgery_key> rejected; // end-game surgeries executed and undone, not to be tried again
+  std::size_t end_game_attempts = 0; // end-game surgeries executed in the last round
 
 public:
   Batch_optimizer(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
@@ -100,7 +114,8 @@ public:
       ctx(pm, vpm, ecm, fcm), smoother(pm, vpm, ecm, fcm, settings.smooth), rng(settings.seed),
       search_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       op_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
-      scar_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm))
+      scar_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
+      outer_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm))
   {
     smoother.quality_floor = settings.quality_floor;
     for(vertex_descriptor v : vertices(pm))
@@ -108,6 +123,7 @@ public:
       put(search_stamp, v, 0u);
       put(op_stamp, v, 0u);
       put(scar_stamp, v, 0u);
+      put(outer_stamp, v, 0u);
     }
   }
 
@@ -117,9 +133,20 @@ public:
     singular = ctx.begin_batch();
     stats.initial_number_of_singularities = stats.number_of_singularities = singular.size();
     stats.initial_number_of_faces = stats.number_of_faces = faces(pm).size();
+    stats.pairing_distance = best_pairing_distance = pairing_distance();
     visitor.on_started(stats);
-    while(!stop(stats))
-      run_batch();
+    for(;;)
+    {
+      while(!stop(stats))
+        run_batch(false);
+      const std::size_t kept = stats.number_of_surgeries;
+      if(!settings.end_game || !run_end_game()) break;
+      // The end game cancelled singularities: the batches go on from there if the stop predicate agrees,
+      // asked as after a batch that made progress with the surgeries of the end game.
+      stats.batches_without_improvement = stats.batches_without_progress = 0;
+      stats.candidates_in_last_batch = stats.surgeries_in_last_batch = stats.number_of_surgeries - kept;
+      if(stop(stats)) break;
+    }
     stats.elapsed_seconds = timer.time();
     visitor.on_finished(stats);
     return stats;
@@ -205,6 +232,31 @@ private:
     return std::make_pair(n, q);
   }
 
+  // whether a singularity of the sign opposite to that of s lies within `radius` edges of s
+  bool has_opposite_within(vertex_descriptor s, int radius) const
+  {
+    const int d = ctx.defect(s);
+    for(const auto& j : ctx.nearest_singularities(s))
+    {
+      if(j.distance > radius) break;
+      if(j.defect * d < 0) return true;
+    }
+    return false;
+  }
+
+  // see Optimizer_statistics::pairing_distance (on the context, just refreshed)
+  std::size_t pairing_distance() const
+  {
+    std::size_t sum = 0;
+    for(vertex_descriptor v : singular)
+    {
+      const int d = ctx.defect(v);
+      for(const auto& j : ctx.nearest_singularities(v))
+        if(j.defect * d < 0) { sum += std::size_t(j.distance); break; }
+    }
+    return sum;
+  }
+
   // ---------------------------------------------------------------------------------------------
   // candidates
 
@@ -281,10 +333,12 @@ private:
            std::abs(fafter - f0) < std::abs(fnow - f0);
   }
 
-  template <typename NP>
-  bool best_candidate(vertex_descriptor s, const NP& plan_np, Scored& best)
+  // scores the candidates of source s (the four motions along the paths to its closest partners) and
+  // hands each realizable one that keeps the face count to `handle(candidate, plan, score)`, which may
+  // take the plan
+  template <typename NP, typename Handler>
+  void score_candidates(vertex_descriptor s, const NP& plan_np, const Handler& handle)
   {
-    bool found = false;
     const auto paths = partner_paths(s);
     for(const auto& path : paths)
     {
@@ -307,19 +361,52 @@ private:
         if(c.target_landing != GT::null_vertex() && c.target_landing != s && c.target_landing != t &&
            c.target_landing != c.source_landing && ctx.defect(c.target_landing) * c.target_defect < 0)
           c.predicted_cancellations += 2;
-        const double score = scoring(c, ctx);
-        if(score < 0 && (!found || score < best.score))
-        {
-          found = true;
-          best.score = score;
-          best.predicted_cancellations = c.predicted_cancellations;
-          best.plan = std::move(plan);
-        }
+        handle(c, plan, scoring(c, ctx));
       }
     }
     ctx.clear_cache();
+  }
+
+  // the best improving candidate of s (negative score), if any
+  template <typename NP>
+  bool best_candidate(vertex_descriptor s, const NP& plan_np, Scored& best)
+  {
+    bool found = false;
+    score_candidates(s, plan_np,
+                     [&](const Qzip_candidate<PolygonMesh>& c, Surgery_plan<PolygonMesh>& plan, double score)
+    {
+      if(score < 0 && (!found || score < best.score))
+      {
+        found = true;
+        best.score = score;
+        best.predicted_cancellations = c.predicted_cancellations;
+        best.plan = std::move(plan);
+      }
+    });
     if(found) best.source_point = get(vpm, s);
     return found;
+  }
+
+  Surgery_key key(const Surgery_plan<PolygonMesh>& plan) const
+  {
+    const Point& a = get(vpm, plan.source);
+    const Point& b = get(vpm, plan.target);
+    return Surgery_key{{ a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), double(int(plan.initial_operation)) }};
+  }
+
+  // every improving candidate of s whose landings predict a cancellation (for the end game), except
+  // those already rejected
+  template <typename NP>
+  void cancelling_candidates(vertex_descriptor s, const NP& plan_np, std::vector<Scored>& out)
+  {
+    score_candidates(s, plan_np,
+                     [&](const Qzip_candidate<PolygonMesh>& c, Surgery_plan<PolygonMesh>& plan, double score)
+    {
+      if(score >= 0 || c.predicted_cancellations == 0) return;
+      const Surgery_key k = key(plan);
+      if(rejected.count(k) != 0) return;
+      out.push_back(Scored{ std::move(plan), score, get(vpm, s), c.predicted_cancellations, k });
+    });
   }
 
   // ---------------------------------------------------------------------------------------------
@@ -330,8 +417,57 @@ private:
     for(vertex_descriptor v : region) put(op_stamp, v, batch_epoch);
   }
 
+  // whether v is singular (the context's definition of the defect, on the mesh as it is now)
+  bool is_singular_now(vertex_descriptor v) const
+  {
+    bool cut = false;
+    int valence = 0;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      ++valence;
+      if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) cut = true;
+    }
+    if(!cut) return valence != 4;
+    typedef typename Kernel_traits<Point>::Kernel Kernel;
+    return internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect != 0;
+  }
+
+  // the number of singular vertices within four edges of the path of a surgery just executed: the
+  // vertices reached from the touched vertices and from `shell` (the vertices at distance four before
+  // the surgery, never removed) without entering the vertices at distance five (stamped `outer_epoch`,
+  // untouched, so they still enclose the region); `false` if a touched vertex lies outside.
+  std::pair<bool, std::size_t> singular_in_region(const std::vector<vertex_descriptor>& touched,
+                                                  const std::vector<vertex_descriptor>& shell)
+  {
+    ++search_epoch;
+    std::vector<vertex_descriptor> queue;
+    for(vertex_descriptor v : touched)
+    {
+      if(get(outer_stamp, v) == outer_epoch) return std::make_pair(false, std::size_t(0));
+      if(get(search_stamp, v) != search_epoch) { put(search_stamp, v, search_epoch); queue.push_back(v); }
+    }
+    for(vertex_descriptor v : shell)
+      if(get(search_stamp, v) != search_epoch) { put(search_stamp, v, search_epoch); queue.push_back(v); }
+    std::size_t n = 0;
+    for(std::size_t i = 0; i < queue.size(); ++i)
+    {
+      if(is_singular_now(queue[i])) ++n;
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(queue[i], pm), pm))
+      {
+        const vertex_descriptor w = source(h, pm);
+        if(get(search_stamp, w) == search_epoch || get(outer_stamp, w) == outer_epoch) continue;
+        put(search_stamp, w, search_epoch);
+        queue.push_back(w);
+      }
+    }
+    return std::make_pair(true, n);
+  }
+
+  // executes the candidate unless its region was already operated on in this batch; keeps it if the
+  // smoothed scar has no more inverted quads than before (and, if `require_decrease`, if the number of
+  // singularities near its path dropped), else undoes it exactly
   template <typename NP>
-  void execute(const Scored& cand, const NP& exec_np)
+  Outcome execute(const Scored& cand, const NP& exec_np, bool require_decrease)
   {
     const Surgery_plan<PolygonMesh>& plan = cand.plan;
     // The region of the plan must not have been operated on in this batch. Only the path vertices are
@@ -339,14 +475,32 @@ private:
     // of its path, which is marked, so no removed vertex is ever walked around. A path at four edges or
     // more from the earlier paths has its one-ring (what its operations touch) disjoint from theirs.
     for(vertex_descriptor v : plan.path)
-      if(get(op_stamp, v) == batch_epoch) { ++stats.number_of_skipped_surgeries; return; }
-    if(!keeps_face_count(plan)) { ++stats.number_of_skipped_surgeries; return; }
+      if(get(op_stamp, v) == batch_epoch) { ++stats.number_of_skipped_surgeries; return SKIPPED; }
+    if(!keeps_face_count(plan)) { ++stats.number_of_skipped_surgeries; return SKIPPED; }
     // A surgery only removes vertices within three edges of its path (the far corners of the clean-up);
     // the vertices at distance four are never touched: they stay alive through an undo and lead back
     // to the re-created vertices, whose descriptors are new (or recycled with reset properties).
     std::vector<int> level;
-    const std::vector<vertex_descriptor> region = ball(plan.path, 4, level);
+    std::vector<vertex_descriptor> region = ball(plan.path, require_decrease ? 5 : 4, level);
     std::vector<vertex_descriptor> shell;
+    std::size_t singular_before = 0;
+    if(require_decrease)
+    {
+      ++outer_epoch;
+      std::size_t inside = 0;
+      for(std::size_t i = 0; i < region.size(); ++i)
+      {
+        if(level[i] == 5) put(outer_stamp, region[i], outer_epoch);
+        else
+        {
+          if(is_singular_now(region[i])) ++singular_before;
+          region[inside] = region[i];
+          level[inside++] = level[i];
+        }
+      }
+      region.resize(inside);
+      level.resize(inside);
+    }
     for(std::size_t i = 0; i < region.size(); ++i)
     {
       if(level[i] < 4) put(op_stamp, region[i], batch_epoch);
@@ -363,7 +517,13 @@ private:
     const std::pair<std::size_t, double> before = quality(near_path);
     Qzip_history<PolygonMesh, VertexPointMap> history(pm, vpm); // this surgery only
     Qzip_result<PolygonMesh> r = execute_qzip(pm, plan, history, exec_np);
-    if(!r.is_done()) { ++stats.number_of_failed_surgeries; mark_after_undo(); return; }
+    if(!r.is_done())
+    {
+      ++stats.number_of_failed_surgeries;
+      mark_after_undo();
+      if(require_decrease) rejected.insert(cand.key);
+      return FAILED;
+    }
 
     std::vector<vertex_descriptor> scar = ball(r.touched_vertices, 1);
     sort_by_position(scar);
@@ -374,14 +534,21 @@ private:
     // never worse: no more inverted quads than before, and no quad worse than the worst one before
     // unless it stays above the quality floor
     const std::pair<std::size_t, double> after = quality(scar);
-    if(after.first > before.first || after.second < (std::min)(before.second, settings.quality_floor))
+    bool keep = after.first <= before.first && after.second >= (std::min)(before.second, settings.quality_floor);
+    if(keep && require_decrease)
+    {
+      const std::pair<bool, std::size_t> singular_after = singular_in_region(r.touched_vertices, shell);
+      keep = singular_after.first && singular_after.second < singular_before;
+    }
+    if(!keep)
     {
       for(std::size_t i = 0; i < scar.size(); ++i) put(vpm, scar[i], saved[i]);
       undo_qzip(history);
       mark_after_undo();
       ++stats.number_of_undone_surgeries;
       visitor.on_undo(plan);
-      return;
+      if(require_decrease) rejected.insert(cand.key);
+      return UNDONE;
     }
     for(vertex_descriptor v : scar) put(scar_stamp, v, batch_epoch);
     edited_vertices.insert(edited_vertices.end(), scar.begin(), scar.end());
@@ -390,46 +557,66 @@ private:
     ++stats.number_of_surgeries;
     ++stats.surgeries_in_last_batch;
     visitor.on_surgery(plan, cand.score, -cand.predicted_cancellations);
+    return KEPT;
   }
 
-  void run_batch()
+  // One batch (Sec. 4.1), or one round of the end game: every singularity that can start a surgery and
+  // has one of the opposite sign within two edges (a landing that cancels is next to the source or to
+  // the target) tries all its improving candidates predicted to cancel singularities, best predictions
+  // first, and a surgery is kept only if the singularities near its path are actually fewer.
+  void run_batch(bool end_game)
   {
     ++batch_epoch;
     CGAL::Real_timer score_timer, exec_timer;
     score_timer.start();
     stats.surgeries_in_last_batch = 0;
 
-    // a random half of the singularities that can start a surgery, in an order that does not depend
-    // on descriptors
+    // the singularities that can start a surgery, in an order that does not depend on descriptors; a
+    // random half of them in a batch
     std::vector<vertex_descriptor> sources;
     for(vertex_descriptor v : singular) if(is_endpoint(v)) sources.push_back(v);
     sort_by_position(sources);
-    for(std::size_t i = sources.size(); i > 1; --i)
-      std::swap(sources[i - 1], sources[std::size_t(rng.get_int(0, int(i)))]);
-    sources.resize((sources.size() + 1) / 2);
+    if(!end_game)
+    {
+      for(std::size_t i = sources.size(); i > 1; --i)
+        std::swap(sources[i - 1], sources[std::size_t(rng.get_int(0, int(i)))]);
+      sources.resize((sources.size() + 1) / 2);
+    }
 
     const auto plan_np = Qzip::parameters::face_is_constrained_map(fcm,
                            CGAL::parameters::edge_is_constrained_map(ecm).vertex_point_map(vpm));
     std::vector<Scored> chosen;
     for(vertex_descriptor s : sources)
     {
+      if(end_game)
+      {
+        if(has_opposite_within(s, 2)) cancelling_candidates(s, plan_np, chosen);
+        continue;
+      }
       Scored best;
       if(best_candidate(s, plan_np, best)) chosen.push_back(std::move(best));
     }
-    std::stable_sort(chosen.begin(), chosen.end(), [](const Scored& a, const Scored& b)
+    std::stable_sort(chosen.begin(), chosen.end(), [end_game](const Scored& a, const Scored& b)
     {
+      if(end_game && a.predicted_cancellations != b.predicted_cancellations)
+        return a.predicted_cancellations > b.predicted_cancellations;
       if(a.score != b.score) return a.score < b.score;
       return point_less(a.source_point, b.source_point);
     });
-    stats.candidates_in_last_batch = chosen.size();
-    chosen.resize((chosen.size() + 1) / 2);
+    if(!end_game)
+    {
+      stats.candidates_in_last_batch = chosen.size();
+      chosen.resize((chosen.size() + 1) / 2);
+    }
     score_timer.stop();
     stats.scoring_seconds += score_timer.time();
-    visitor.on_batch_scored(stats, chosen.size());
+    if(!end_game) visitor.on_batch_scored(stats, chosen.size());
 
     exec_timer.start();
     const std::size_t attempts = stats.number_of_surgeries + stats.number_of_undone_surgeries + stats.number_of_failed_surgeries;
-    for(const Scored& c : chosen) execute(c, plan_np);
+    end_game_attempts = 0;
+    for(const Scored& c : chosen)
+      if(execute(c, plan_np, end_game) != SKIPPED) ++end_game_attempts;
     // an undone or rolled back surgery may give new descriptors to the vertices it re-created
     const bool edited = stats.number_of_surgeries + stats.number_of_undone_surgeries + stats.number_of_failed_surgeries != attempts;
 
@@ -449,10 +636,37 @@ private:
     const std::size_t before = stats.number_of_singularities;
     stats.number_of_singularities = singular.size();
     stats.number_of_faces = faces(pm).size();
-    stats.batches_without_improvement = singular.size() < before ? 0 : stats.batches_without_improvement + 1;
-    ++stats.batch;
+    stats.pairing_distance = pairing_distance();
     stats.elapsed_seconds = timer.time();
+    if(end_game)
+    {
+      ++stats.end_game_rounds;
+      return;
+    }
+    stats.batches_without_improvement = singular.size() < before ? 0 : stats.batches_without_improvement + 1;
+    if(singular.size() < before || stats.pairing_distance < best_pairing_distance)
+    {
+      best_pairing_distance = stats.pairing_distance;
+      stats.batches_without_progress = 0;
+    }
+    else ++stats.batches_without_progress;
+    ++stats.batch;
     visitor.on_batch_finished(stats);
+  }
+
+  // the end game, once the batches stop: rounds (see run_batch()) as long as they try surgeries; a
+  // surgery undone is not tried again (the surgeries skipped because an earlier one of the round
+  // operated near them are tried in the next round). Returns whether it cancelled singularities.
+  bool run_end_game()
+  {
+    const std::size_t initial = stats.number_of_singularities;
+    for(std::size_t round = 0; round < settings.max_end_game_rounds; ++round)
+    {
+      run_batch(true);
+      if(end_game_attempts == 0) break;
+    }
+    best_pairing_distance = stats.pairing_distance;
+    return stats.number_of_singularities < initial;
   }
 };
 
