@@ -346,9 +346,9 @@ void test_protection_and_features(const std::string& fandisk)
   features.check(m, feature);
 }
 
-// the shared corpus, when present: invariants on a few small meshes, both mesh types on one of them
 // The stop predicates on progress, and the end game: after a stop, every surgery it keeps was predicted
-// to cancel singularities and did (each one lowers the count), and it leaves a valid mesh.
+// to cancel singularities and did (each one lowers the count), and it leaves a valid mesh; without it
+// (do_end_game(false)) the run ends with the batches.
 void test_end_game()
 {
   Q::Optimizer_statistics st;
@@ -393,12 +393,18 @@ void test_end_game()
     assert(kept == vis.predicted_in_end_game);
     assert(s.number_of_singularities + kept <= vis.after_batches);
     if(kept > 0) ++with_end_game;
+    Surface_mesh without;
+    make_cc_sphere(without, 2);
+    const auto w = Q::optimize_singularities(without, Q::parameters::do_end_game(false,
+                     Q::parameters::stop_predicate(Q::Batch_count_stop_predicate(6), CGAL::parameters::random_seed(seed))));
+    assert(w.end_game_rounds == 0 && w.batch == 6 && w.number_of_singularities == vis.after_batches);
     std::cout << "end game (seed " << seed << "): " << vis.after_batches << " -> " << s.number_of_singularities
               << " singularities after 6 batches, " << kept << " surgeries in " << s.end_game_rounds << " rounds" << std::endl;
   }
   assert(with_end_game > 0);
 }
 
+// the shared corpus, when present: invariants on a few small meshes, both mesh types on one of them
 void test_corpus()
 {
   const std::string dir = shared_corpus_dir("test_optimizer");

@@ -129,6 +129,12 @@ Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valen
                           placement inverts a quad are undone}
     \cgalParamDefault{`true`}
   \cgalParamNEnd
+  \cgalParamNBegin{do_end_game}
+    \cgalParamDescription{(Qzip) whether the end game runs when the stop predicate says stop: rounds that try every
+                          improving candidate predicted to cancel singularities next to an opposite one, keeping
+                          those that lower the number of singularities near their path (see the user manual)}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
   \cgalParamNBegin{number_of_relaxation_steps}
     \cgalParamDescription{the number of smoothing sweeps after each surgery and after each batch}
     \cgalParamDefault{5}
@@ -188,6 +194,7 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
 
   internal::Optimizer_settings settings;
   settings.smooth = choose_parameter(get_parameter(np, Qzip::internal_np::smoothing), true);
+  settings.end_game = choose_parameter(get_parameter(np, Qzip::internal_np::end_game), true);
   settings.smoothing_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 5);
   settings.face_count_tolerance = choose_parameter(get_parameter(np, Qzip::internal_np::face_count_tolerance), 0.1);
   settings.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
