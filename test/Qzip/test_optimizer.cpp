@@ -161,6 +161,18 @@ void check_partial_nearest_singularities(const Context& ctx, Vertex v, Vertex x1
   assert(k == part.size);
 }
 
+// opposite_singularity_distance() is the distance of the first singularity of the opposite sign in the full
+// list without x1 and x2 (asked first, so that its early stop is followed by a second search)
+template <typename Context, typename Vertex>
+void check_opposite_singularity_distance(const Context& ctx, Vertex v, int sign, Vertex x1, Vertex x2)
+{
+  const int d = ctx.opposite_singularity_distance(v, sign, x1, x2);
+  int expected = -1;
+  for(const auto& j : ctx.nearest_singularities(v))
+    if(j.vertex != x1 && j.vertex != x2 && j.defect * sign < 0) { expected = j.distance; break; }
+  assert(d == expected);
+}
+
 // stop predicates, no smoothing, a custom scoring functor
 struct No_collapse_scoring
 {
@@ -178,6 +190,8 @@ struct No_collapse_scoring
     }
     if(*calls % 16 == 2 && c.target_landing != boost::graph_traits<PolygonMesh>::null_vertex())
       check_partial_nearest_singularities(ctx, c.target_landing, c.source, c.target, 1 + *calls % 3);
+    if(*calls % 16 == 3 && c.source_landing != boost::graph_traits<PolygonMesh>::null_vertex())
+      check_opposite_singularity_distance(ctx, c.source_landing, c.source_defect, c.source, c.target);
     if(c.plan->number_of_collapses() > 0) return 1.; // refuse every surgery that collapses a quad
     return Q::Default_scoring()(c, ctx);
   }

@@ -50,9 +50,7 @@ private:
   static int partner_distance(typename boost::graph_traits<PolygonMesh>::vertex_descriptor at, int defect,
                               const Qzip_candidate<PolygonMesh>& c, const Context& ctx)
   {
-    for(const auto& j : ctx.nearest_singularities(at))
-      if(j.vertex != c.source && j.vertex != c.target && j.defect * defect < 0) return j.distance;
-    return -1;
+    return ctx.opposite_singularity_distance(at, defect, c.source, c.target);
   }
 
   template <typename PolygonMesh, typename Context>

@@ -424,6 +424,24 @@ public:
     return nb;
   }
 
+  /// the distance from `v` to the closest singularity whose defect has the sign opposite to `sign`, among
+  /// the singularities of `nearest_singularities(v)` other than `x1` and `x2`; -1 if there is none among
+  /// them. Cheaper than `nearest_singularities(v)`: the search around `v` stops once it is known.
+  int opposite_singularity_distance(vertex_descriptor v, int sign, vertex_descriptor x1, vertex_descriptor x2) const
+  {
+    const int i = index(v);
+    if(i < 0) return -1;
+    const int i1 = x1 == GT::null_vertex() ? -1 : index(x1), i2 = x2 == GT::null_vertex() ? -1 : index(x2);
+    compute_nearest(i, i1, i2, max_nearest_singularities, sign);
+    const std::size_t K = max_nearest_singularities;
+    for(std::size_t k = std::size_t(i) * K; k < std::size_t(i) * K + near_labels.count[std::size_t(i)]; ++k)
+    {
+      const int j = near_labels.source[k];
+      if(j != i && j != i1 && j != i2 && defects[std::size_t(j)] * sign < 0) return near_labels.distance[k];
+    }
+    return -1;
+  }
+
   /// the graph distance from `a` to `b`, or `max_radius + 1` if it is larger than `max_radius`.
   int distance(vertex_descriptor a, vertex_descriptor b, int max_radius)
   {
@@ -541,41 +559,47 @@ public:
 private:
 
   // the number of labels of vertex i other than i, x1 and x2 (indices, -1 for none)
-  std::size_t count_other_labels(int i, int x1, int x2) const
+  // whether the labels of vertex i (a beginning of the list of its closest singularities) answer a query:
+  // they hold n singularities other than i, x1 and x2, or (`sign` not 0) one of them has a defect of the
+  // sign opposite to `sign`
+  bool labels_answer(int i, int x1, int x2, std::size_t n, int sign) const
   {
     const std::size_t K = max_nearest_singularities;
-    std::size_t n = 0;
+    std::size_t others = 0;
     for(std::size_t k = std::size_t(i) * K; k < std::size_t(i) * K + near_labels.count[std::size_t(i)]; ++k)
     {
       const int j = near_labels.source[k];
-      if(j != i && j != x1 && j != x2) ++n;
+      if(j == i || j == x1 || j == x2) continue;
+      if(defects[std::size_t(j)] * sign < 0) return true;
+      ++others;
     }
-    return n;
+    return others >= n;
   }
 
-  // makes the labels of vertex i hold at least n singularities other than i, x1 and x2, or all of its
+  // makes the labels of vertex i hold at least n singularities other than i, x1 and x2 (or, `sign` not 0,
+  // up to the first of them whose defect has the sign opposite to `sign`), or all of its
   // max_nearest_singularities closest ones: ties broken by their rank (the order of begin_batch()), by
   // increasing distance. A breadth-first search from i, level by level, that stops at the first level
   // where enough are known. It gives the same labels as a breadth-first search from all singularities at
   // once, in rank order, in which each vertex keeps the first labels that reach it (a label among the
   // closest of a vertex is among the closest of its predecessor on a shortest path), but it only costs
   // the ball around i that holds them.
-  void compute_nearest(int i, int x1, int x2, std::size_t n) const
+  void compute_nearest(int i, int x1, int x2, std::size_t n, int sign = 0) const
   {
     const std::size_t K = max_nearest_singularities;
-    if(near_known[std::size_t(i)] == epoch &&
-       (near_complete[std::size_t(i)] || count_other_labels(i, x1, x2) >= n)) return;
-    if(near_known[std::size_t(i)] != epoch && restore_nearest(i, x1, x2, n)) return;
+    if(near_known[std::size_t(i)] == epoch && (near_complete[std::size_t(i)] || labels_answer(i, x1, x2, n, sign))) return;
+    if(near_known[std::size_t(i)] != epoch && restore_nearest(i, x1, x2, n, sign)) return;
     if(++near_round == 0) { std::fill(near_visit.begin(), near_visit.end(), 0u); near_round = 1; }
     near_known[std::size_t(i)] = epoch;
     unsigned char& count = near_labels.count[std::size_t(i)];
     count = 0;
     std::size_t others = 0;
+    bool opposite_found = false;
     near_queue.assign(1, i);
     near_visit[std::size_t(i)] = near_round;
     std::size_t begin = 0;
     int radius = 0;
-    for(std::size_t level = 0; begin < near_queue.size() && count < K && others < n; ++level)
+    for(std::size_t level = 0; begin < near_queue.size() && count < K && others < n && !opposite_found; ++level)
     {
       radius = int(level);
       const std::size_t end = near_queue.size();
@@ -588,8 +612,12 @@ private:
         if(ranks[std::size_t(u)] >= 0)
         {
           near_found.emplace_back(ranks[std::size_t(u)], u);
-          if(u != i && u != x1 && u != x2) ++found_others;
-          last_level = count + near_found.size() >= K || others + found_others >= n;
+          if(u != i && u != x1 && u != x2)
+          {
+            ++found_others;
+            opposite_found = opposite_found || defects[std::size_t(u)] * sign < 0;
+          }
+          last_level = count + near_found.size() >= K || others + found_others >= n || opposite_found;
         }
         if(last_level) continue;
         for(const int* w = neighbors_begin(u); w != neighbors_end(u); ++w)
@@ -609,7 +637,8 @@ private:
       }
       begin = end;
     }
-    near_complete[std::size_t(i)] = count == K || others < n; // else the ball around i has fewer
+    // else the search stopped with enough, or the ball around i has fewer
+    near_complete[std::size_t(i)] = count == K || (others < n && !opposite_found);
     keep_nearest(i, radius);
   }
 
@@ -642,7 +671,7 @@ private:
 
   // the labels of vertex i from `kept`, if they are known there, still hold (same vertex and labels at
   // the same places, still singular) and suffice for the query
-  bool restore_nearest(int i, int x1, int x2, std::size_t n) const
+  bool restore_nearest(int i, int x1, int x2, std::size_t n, int sign) const
   {
     const std::size_t K = max_nearest_singularities;
     const vertex_descriptor v = by_index[std::size_t(i)];
@@ -651,13 +680,16 @@ private:
     const Kept& e = kept[k - 1];
     if(e.owner != v || !(e.position == get(vpm, v))) return false;
     std::size_t others = 0;
+    bool opposite = false;
     for(std::size_t j = 0; j < e.count; ++j)
     {
       const int l = index(e.label[j]);
       if(l < 0 || ranks[std::size_t(l)] < 0 || !(e.label_position[j] == get(vpm, e.label[j]))) return false;
-      if(l != i && l != x1 && l != x2) ++others;
+      if(l == i || l == x1 || l == x2) continue;
+      ++others;
+      opposite = opposite || defects[std::size_t(l)] * sign < 0;
     }
-    if(!e.complete && others < n) return false;
+    if(!e.complete && others < n && !opposite) return false;
     near_known[std::size_t(i)] = epoch;
     near_complete[std::size_t(i)] = e.complete ? 1 : 0;
     near_labels.count[std::size_t(i)] = static_cast<unsigned char>(e.count);

@@ -250,9 +250,8 @@ private:
     std::size_t sum = 0;
     for(vertex_descriptor v : singular)
     {
-      const int d = ctx.defect(v);
-      for(const auto& j : ctx.nearest_singularities(v))
-        if(j.defect * d < 0) { sum += std::size_t(j.distance); break; }
+      const int d = ctx.opposite_singularity_distance(v, ctx.defect(v), GT::null_vertex(), GT::null_vertex());
+      if(d >= 0) sum += std::size_t(d);
     }
     return sum;
   }
