@@ -218,6 +218,21 @@ void plant_chain(Mesh& m, int n, int row, int col, int k, bool along_rows)
 
 /// every ordered pair of the planted singularities, four motions each: invariants, the moved pair within
 /// one edge of where it was (positions of a planar grid as a proxy), exact undo.
+/// a plan refused because it starts with a split (`SPLIT_WITHOUT_GUIDE`) cannot be carried out: forced
+/// through the executor, the chain stops at its first operation, which has no guide edge, and the mesh
+/// is left as it was
+template <typename Mesh>
+void check_split_without_guide(Mesh& m, Q::Surgery_plan<Mesh> plan)
+{
+  assert(plan.status == Q::Plan_status::SPLIT_WITHOUT_GUIDE && Q::is_split(plan.operations[0]));
+  Mesh before;
+  copy_mesh(m, before);
+  plan.status = Q::Plan_status::REALIZABLE;
+  const auto r = Q::execute_qzip(m, plan);
+  assert(!r.is_done() && r.failure == Q::Execution_failure::NO_GUIDE_FOR_SPLIT && r.failed_step == 0);
+  assert(are_isomorphic(m, before) && sorted_points(m) == sorted_points(before));
+}
+
 template <typename Mesh>
 void test_planted_pairs(Counters& c, std::size_t& longest)
 {
@@ -329,7 +344,8 @@ inline int winding_number(const std::vector<Point>& loop, const Point& p)
 /// random paths through waypoints between planted singularities, avoiding the other singularities;
 /// two paths whose loop winds around no other singularity are homotopic and must give isomorphic meshes.
 template <typename Mesh>
-void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& distinct_classes_differing)
+void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& distinct_classes_differing,
+                   std::size_t& rolled_back, std::size_t& split_without_guide)
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   CGAL::Random rng(seed);
@@ -381,8 +397,11 @@ void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& dis
           std::vector<vertex_descriptor> path;
           for(auto v : paths[a]) path.push_back(v2v[v]);
           const auto plan = Q::plan_qzip(results[a], path, Q::Strip_operation(mo));
+          if(plan.status == Q::Plan_status::SPLIT_WITHOUT_GUIDE)
+          { check_split_without_guide(results[a], plan); ++split_without_guide; }
           if(!plan.is_realizable()) continue;
           done[a] = Q::execute_qzip(results[a], plan).is_done();
+          if(!done[a]) ++rolled_back;
         }
         for(std::size_t a = 0; a < paths.size(); ++a)
           for(std::size_t b = a + 1; b < paths.size(); ++b)
@@ -863,6 +882,7 @@ bool border_path_qzip(const Mesh& m, const std::vector<typename boost::graph_tra
     const auto by_halfedges = Q::plan_qzip(result, hs, Q::Strip_operation(motion));
     assert(by_halfedges.status == plan.status && by_halfedges.path == plan.path && by_halfedges.operations == plan.operations);
   }
+  if(plan.status == Q::Plan_status::SPLIT_WITHOUT_GUIDE) check_split_without_guide(result, plan);
   if(!plan.is_realizable()) { ++bc.refused[plan.status]; return false; }
   Mesh original;
   copy_mesh(result, original);
@@ -1012,6 +1032,9 @@ void test_border_paths()
   grid_sm.print("planted grids, Surface_mesh");
   grid_ph.print("planted grids, Polyhedron_3");
   assert(grid_sm.along.c.done == grid_ph.along.c.done && grid_sm.both == grid_ph.both);
+  // one row inside, 3 rollbacks before a first split without guide was refused by the plan
+  assert(grid_sm.along.c.rolled_back == 0 && grid_sm.inside.c.rolled_back <= 2 && grid_ph.inside.c.rolled_back <= 2);
+  assert(grid_sm.inside.refused.count(Q::Plan_status::SPLIT_WITHOUT_GUIDE) != 0);
   assert(grid_sm.both > 0 && grid_sm.around_corner > 0 && grid_sm.along.reversed > 0);
   // every Q-zip along the border either cancelled singularities or has a reverse Q-zip
   assert(grid_sm.along.c.done == grid_sm.along.reversed + grid_sm.along.no_reverse_count(Q::Reverse_qzip_status::SINGULARITIES_CANCELLED));
@@ -1019,6 +1042,7 @@ void test_border_paths()
     border_path_qzips<Surface_mesh>(f, 60, 5, real);
   border_path_qzips<Polyhedron>("data/polylap_suzanne_half.obj", 30, 6, real);
   real.print("paths along the border, bundled meshes");
+  assert(real.c.rolled_back <= 3);
   assert(real.c.done > 0 && real.c.done == real.reversed + real.no_reverse_count(Q::Reverse_qzip_status::SINGULARITIES_CANCELLED));
 }
 
@@ -1036,13 +1060,18 @@ int main(int argc, char** argv)
   assert(longest >= 45);
   assert(planted_sm.done > 0 && planted_sm.located > 0);
   assert(planted_sm.done == planted_ph.done && planted_sm.located == planted_ph.located);
+  assert(planted_sm.rolled_back == 0 && planted_ph.rolled_back == 0);
 
-  std::size_t homotopic = 0, differing = 0;
-  for(unsigned seed = 1; seed <= 3; ++seed) test_homotopy<Surface_mesh>(seed, homotopic, differing);
-  test_homotopy<Polyhedron>(4, homotopic, differing);
+  std::size_t homotopic = 0, differing = 0, homotopy_rolled_back = 0, homotopy_split_without_guide = 0;
+  for(unsigned seed = 1; seed <= 3; ++seed)
+    test_homotopy<Surface_mesh>(seed, homotopic, differing, homotopy_rolled_back, homotopy_split_without_guide);
+  test_homotopy<Polyhedron>(4, homotopic, differing, homotopy_rolled_back, homotopy_split_without_guide);
   std::cout << "  homotopy: " << homotopic << " homotopic path pairs gave isomorphic meshes; "
-            << differing << " non-homotopic pairs gave different meshes" << std::endl;
+            << differing << " non-homotopic pairs gave different meshes; " << homotopy_rolled_back
+            << " rolled back; " << homotopy_split_without_guide << " refused for a split without guide" << std::endl;
   assert(homotopic > 100);
+  // 6 rollbacks before the plan refused a first split without guide (SPLIT_WITHOUT_GUIDE)
+  assert(homotopy_rolled_back <= 5 && homotopy_split_without_guide >= 1);
 
   test_refusals_and_parameters();
   std::cout << "  refusals, constraints, visitor and named parameters ok" << std::endl;
@@ -1064,6 +1093,7 @@ int main(int argc, char** argv)
   random_sm.print("random Q-zips on bundled meshes, Surface_mesh");
   random_ph.print("random Q-zips on bundled meshes, Polyhedron_3");
   assert(random_sm.done > 0 && random_ph.done > 0);
+  assert(random_sm.rolled_back == 0 && random_ph.rolled_back == 0);
 
   const std::string dir = shared_corpus_dir("random Q-zips on the shared corpus");
   if(!dir.empty())
@@ -1075,6 +1105,7 @@ int main(int argc, char** argv)
       run_corpus_file<Surface_mesh>(dir + "/" + f, per_mesh * 2 / 3, 11, shared);
     }
     shared.print("random Q-zips on the shared corpus, Surface_mesh");
+    assert(shared.rolled_back <= 16); // 16 of 2016 realizable plans (see the user manual, "Current Limitations")
   }
   return EXIT_SUCCESS;
 }

@@ -308,6 +308,12 @@ plan_qzip(const PolygonMesh& pm,
   }
   if(st == Plan_status::REALIZABLE && !internal::is_simple_edge_path(plan.path, pm))
     st = Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT;
+  // a split is delimited by the guide that the operation before it leaves (Chain_executor): the first
+  // operation has none, and the execution would stop there. The start rules give the first vertex a
+  // collapse or a no-operation, but its tag may be rotated into a split afterwards: by the removal of a
+  // fold at the start of a re-routed path (n -> d -> n) or by the end rule of a short path.
+  if(st == Plan_status::REALIZABLE && is_split(plan.operations[0]))
+    st = Plan_status::SPLIT_WITHOUT_GUIDE;
   if(st != Plan_status::REALIZABLE) { plan.status = st; return plan; }
 
   // every vertex the chain operates on is a path vertex or one of its neighbours: keep the path away
