@@ -110,11 +110,12 @@ struct Snapshot
 struct Counters
 {
   std::size_t done = 0, refused = 0, rolled_back = 0, cancelling = 0, located = 0, checked_moves = 0;
+  std::size_t predicted_failures = 0; // refused plans whose execution, forced, fails as predicted
   void print(const char* what) const
   {
     std::cout << "  " << what << ": " << done << " done (" << cancelling << " cancelling singularities, "
               << located << " with the moved pair located, " << checked_moves << " moves checked to be one edge), " << refused << " refused by the plan, "
-              << rolled_back << " rolled back" << std::endl;
+              << rolled_back << " rolled back, " << predicted_failures << " refused that would have rolled back" << std::endl;
   }
 };
 
@@ -218,6 +219,29 @@ void plant_chain(Mesh& m, int n, int row, int col, int k, bool along_rows)
 
 /// every ordered pair of the planted singularities, four motions each: invariants, the moved pair within
 /// one edge of where it was (positions of a planar grid as a proxy), exact undo.
+/// the refusals that predict a failure of the execution: a plan that starts with a split
+/// (`SPLIT_WITHOUT_GUIDE`) or leaves a valence-6 vertex that the clean-up cannot split (`VALENCE_6_LEFT`)
+/// cannot be carried out. Forced through the executor, such a plan fails for the predicted reason and
+/// the mesh is left as it was. Returns whether `plan` is such a refusal. A history that records the
+/// Q-zips done on `m` must be passed (the roll-back re-creates elements).
+template <typename Mesh, typename... History>
+bool check_predicted_failure(Mesh& m, Q::Surgery_plan<Mesh> plan, History&... history)
+{
+  if(plan.status != Q::Plan_status::SPLIT_WITHOUT_GUIDE && plan.status != Q::Plan_status::VALENCE_6_LEFT) return false;
+  const Q::Plan_status status = plan.status;
+  Mesh before;
+  copy_mesh(m, before);
+  plan.status = Q::Plan_status::REALIZABLE;
+  const auto r = Q::execute_qzip(m, plan, history...);
+  assert(!r.is_done());
+  if(status == Q::Plan_status::SPLIT_WITHOUT_GUIDE)
+    assert(r.failure == Q::Execution_failure::NO_GUIDE_FOR_SPLIT && r.failed_step == 0);
+  else
+    assert(r.failure == Q::Execution_failure::CLEANUP_IMPOSSIBLE);
+  assert(are_isomorphic(m, before) && sorted_points(m) == sorted_points(before));
+  return true;
+}
+
 template <typename Mesh>
 void test_planted_pairs(Counters& c, std::size_t& longest)
 {
@@ -246,6 +270,7 @@ void test_planted_pairs(Counters& c, std::size_t& longest)
             assert(!path.empty() && path.front() == s && path.back() == t);
             longest = (std::max)(longest, path.size() - 1);
             const auto plan = Q::plan_qzip(w, path, Q::Strip_operation(mo));
+            if(check_predicted_failure(w, plan)) ++c.predicted_failures;
             if(!plan.is_realizable()) { ++c.refused; continue; }
             Q::Qzip_history<Mesh> history(w);
             const auto r = Q::execute_qzip(w, plan, history);
@@ -329,7 +354,8 @@ inline int winding_number(const std::vector<Point>& loop, const Point& p)
 /// random paths through waypoints between planted singularities, avoiding the other singularities;
 /// two paths whose loop winds around no other singularity are homotopic and must give isomorphic meshes.
 template <typename Mesh>
-void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& distinct_classes_differing)
+void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& distinct_classes_differing,
+                   std::size_t& rolled_back, std::size_t& predicted_failures)
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   CGAL::Random rng(seed);
@@ -381,8 +407,10 @@ void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& dis
           std::vector<vertex_descriptor> path;
           for(auto v : paths[a]) path.push_back(v2v[v]);
           const auto plan = Q::plan_qzip(results[a], path, Q::Strip_operation(mo));
+          if(check_predicted_failure(results[a], plan)) ++predicted_failures;
           if(!plan.is_realizable()) continue;
           done[a] = Q::execute_qzip(results[a], plan).is_done();
+          if(!done[a]) ++rolled_back;
         }
         for(std::size_t a = 0; a < paths.size(); ++a)
           for(std::size_t b = a + 1; b < paths.size(); ++b)
@@ -428,6 +456,7 @@ std::size_t random_qzips(Mesh& m, std::size_t count, unsigned seed, Counters& c)
     const auto path = Q::shortest_surgery_path(m, s, t);
     if(path.empty()) continue;
     const auto plan = Q::plan_qzip(m, path, Q::Strip_operation(rng.get_int(0, 4)));
+    if(check_predicted_failure(m, plan, history)) ++c.predicted_failures;
     if(!plan.is_realizable()) { ++c.refused; continue; }
     const Snapshot<Mesh> before(m);
     const std::size_t recorded = history.size();
@@ -462,6 +491,33 @@ struct Counting_visitor : Q::Default_qzip_visitor<Surface_mesh>
   void on_split(halfedge_descriptor, halfedge_descriptor, const Surface_mesh&) { ++splits; }
   void on_qzip_finished(const Q::Surgery_plan<Surface_mesh>&, bool) { ++finished; }
 };
+
+/// `VALENCE_6_LEFT` on a real mesh: a v5 next to the target whose ring leaves the clean-up no two
+/// opposite regular neighbours. Every such plan among the close pairs of singularities, forced through
+/// the executor on a copy, fails in the clean-up; returns their number.
+template <typename Mesh>
+std::size_t test_valence_6_left(const std::string& file, std::size_t wanted)
+{
+  Mesh m;
+  assert(read_mesh(file, m));
+  Q::preprocess_valences(m);
+  std::size_t found = 0;
+  for(auto s : singular_vertices(m))
+    for(auto t : singularities_within(m, s, 1, 3))
+      for(int mo = 0; mo < 4 && found < wanted; ++mo)
+      {
+        const auto path = Q::shortest_surgery_path(m, s, t);
+        if(path.empty() || Q::plan_qzip(m, path, Q::Strip_operation(mo)).status != Q::Plan_status::VALENCE_6_LEFT) continue;
+        Mesh w;
+        auto v2v = copy_mesh_with_map(m, w);
+        std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> p;
+        for(auto v : path) p.push_back(v2v[v]);
+        const auto plan = Q::plan_qzip(w, p, Q::Strip_operation(mo));
+        assert(check_predicted_failure(w, plan));
+        ++found;
+      }
+  return found;
+}
 
 void test_refusals_and_parameters()
 {
@@ -669,6 +725,7 @@ void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::si
                                               Q::Strip_operation(motion));
         assert(from_border.status == plan.status && from_border.source == sketch.front() &&
                from_border.path == plan.path && from_border.operations == plan.operations);
+        if(check_predicted_failure(m, plan)) { ++c.predicted_failures; at.clear(); }
         if(!plan.is_realizable()) { ++c.refused; continue; }
         assert(on_border(plan.path.back(), m) && plan.path[plan.path.size() - (target_defect == 1 ? 2 : 1)] == sketch.back());
         const Snapshot<Mesh> before(m);
@@ -863,6 +920,7 @@ bool border_path_qzip(const Mesh& m, const std::vector<typename boost::graph_tra
     const auto by_halfedges = Q::plan_qzip(result, hs, Q::Strip_operation(motion));
     assert(by_halfedges.status == plan.status && by_halfedges.path == plan.path && by_halfedges.operations == plan.operations);
   }
+  if(check_predicted_failure(result, plan)) ++bc.c.predicted_failures;
   if(!plan.is_realizable()) { ++bc.refused[plan.status]; return false; }
   Mesh original;
   copy_mesh(result, original);
@@ -1012,6 +1070,9 @@ void test_border_paths()
   grid_sm.print("planted grids, Surface_mesh");
   grid_ph.print("planted grids, Polyhedron_3");
   assert(grid_sm.along.c.done == grid_ph.along.c.done && grid_sm.both == grid_ph.both);
+  // one row inside, 3 rollbacks before a first split without guide was refused by the plan
+  assert(grid_sm.along.c.rolled_back == 0 && grid_sm.inside.c.rolled_back <= 2 && grid_ph.inside.c.rolled_back <= 2);
+  assert(grid_sm.inside.refused.count(Q::Plan_status::SPLIT_WITHOUT_GUIDE) != 0);
   assert(grid_sm.both > 0 && grid_sm.around_corner > 0 && grid_sm.along.reversed > 0);
   // every Q-zip along the border either cancelled singularities or has a reverse Q-zip
   assert(grid_sm.along.c.done == grid_sm.along.reversed + grid_sm.along.no_reverse_count(Q::Reverse_qzip_status::SINGULARITIES_CANCELLED));
@@ -1019,6 +1080,7 @@ void test_border_paths()
     border_path_qzips<Surface_mesh>(f, 60, 5, real);
   border_path_qzips<Polyhedron>("data/polylap_suzanne_half.obj", 30, 6, real);
   real.print("paths along the border, bundled meshes");
+  assert(real.c.rolled_back <= 3);
   assert(real.c.done > 0 && real.c.done == real.reversed + real.no_reverse_count(Q::Reverse_qzip_status::SINGULARITIES_CANCELLED));
 }
 
@@ -1036,16 +1098,26 @@ int main(int argc, char** argv)
   assert(longest >= 45);
   assert(planted_sm.done > 0 && planted_sm.located > 0);
   assert(planted_sm.done == planted_ph.done && planted_sm.located == planted_ph.located);
+  assert(planted_sm.rolled_back == 0 && planted_ph.rolled_back == 0);
 
-  std::size_t homotopic = 0, differing = 0;
-  for(unsigned seed = 1; seed <= 3; ++seed) test_homotopy<Surface_mesh>(seed, homotopic, differing);
-  test_homotopy<Polyhedron>(4, homotopic, differing);
+  std::size_t homotopic = 0, differing = 0, homotopy_rolled_back = 0, homotopy_predicted = 0;
+  for(unsigned seed = 1; seed <= 3; ++seed)
+    test_homotopy<Surface_mesh>(seed, homotopic, differing, homotopy_rolled_back, homotopy_predicted);
+  test_homotopy<Polyhedron>(4, homotopic, differing, homotopy_rolled_back, homotopy_predicted);
   std::cout << "  homotopy: " << homotopic << " homotopic path pairs gave isomorphic meshes; "
-            << differing << " non-homotopic pairs gave different meshes" << std::endl;
+            << differing << " non-homotopic pairs gave different meshes; " << homotopy_rolled_back
+            << " rolled back; " << homotopy_predicted << " refused that would have rolled back" << std::endl;
   assert(homotopic > 100);
+  // 6 rollbacks before the plan refused a first split without guide (SPLIT_WITHOUT_GUIDE)
+  assert(homotopy_rolled_back <= 5 && homotopy_predicted >= 1);
 
   test_refusals_and_parameters();
   std::cout << "  refusals, constraints, visitor and named parameters ok" << std::endl;
+  const std::size_t valence_6_sm = test_valence_6_left<Surface_mesh>("data/noisy_sphere_triquad.obj", 5);
+  const std::size_t valence_6_ph = test_valence_6_left<Polyhedron>("data/noisy_sphere_triquad.obj", 5);
+  std::cout << "  plans refused for a valence 6 left without clean-up, noisy_sphere_triquad: " << valence_6_sm
+            << " (Surface_mesh), " << valence_6_ph << " (Polyhedron_3), each failing when forced" << std::endl;
+  assert(valence_6_sm > 0 && valence_6_sm == valence_6_ph);
 
   test_border_endpoints();
   test_border_paths();
@@ -1064,6 +1136,7 @@ int main(int argc, char** argv)
   random_sm.print("random Q-zips on bundled meshes, Surface_mesh");
   random_ph.print("random Q-zips on bundled meshes, Polyhedron_3");
   assert(random_sm.done > 0 && random_ph.done > 0);
+  assert(random_sm.rolled_back == 0 && random_ph.rolled_back == 0);
 
   const std::string dir = shared_corpus_dir("random Q-zips on the shared corpus");
   if(!dir.empty())
@@ -1075,6 +1148,8 @@ int main(int argc, char** argv)
       run_corpus_file<Surface_mesh>(dir + "/" + f, per_mesh * 2 / 3, 11, shared);
     }
     shared.print("random Q-zips on the shared corpus, Surface_mesh");
+    // 16 rollbacks before VALENCE_6_LEFT was refused by the plan (3 refusals, each checked to fail)
+    assert(shared.rolled_back <= 13);
   }
   return EXIT_SUCCESS;
 }

@@ -68,6 +68,8 @@ enum class Plan_status
   PATH_WOULD_COLLAPSE,   ///< a collapse of the chain would merge away a vertex the path has still to visit
   BORDER_OR_CONSTRAINED, ///< an operation would touch a constrained edge or a protected face, collapse a non-quad face, or merge a border vertex away other than where the path leaves the border
   BORDER_FACE_COLLAPSE,  ///< at a path vertex on the border, the compass asks for a collapse on the side of the border, where there is no quad
+  SPLIT_WITHOUT_GUIDE,   ///< the adjusted path starts with a split: no earlier operation gives the guide edge that delimits its fan
+  VALENCE_6_LEFT,        ///< an interior v5 at an end of the path, delimiting the first or the last split, would become a valence-6 vertex that the clean-up cannot split (no two opposite neighbours of valence 4)
   EXECUTION_FAILED       ///< the chain could not be completed (a quad would degenerate, a link condition fails) or left a new singularity; the mesh was restored
 };
 
@@ -116,6 +118,8 @@ inline const char* describe(Plan_status s)
     case Plan_status::NOTHING_TO_DO: return "the plan has no operation: this motion leaves the pair where it is";
     case Plan_status::BORDER_OR_CONSTRAINED: return "an operation would touch a feature or a protected face, collapse a non-quad face, or merge a border vertex away";
     case Plan_status::BORDER_FACE_COLLAPSE: return "at a path vertex on the border, the compass asks for a collapse on the side of the border";
+    case Plan_status::SPLIT_WITHOUT_GUIDE: return "the adjusted path starts with a split, which has no guide edge";
+    case Plan_status::VALENCE_6_LEFT: return "a v5 at an end of the path would become a valence-6 vertex that the clean-up cannot split";
     case Plan_status::EXECUTION_FAILED: return "the chain of operations could not be completed";
   }
   return "";

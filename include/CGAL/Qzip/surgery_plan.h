@@ -176,6 +176,35 @@ bool is_simple_edge_path(const std::vector<typename boost::graph_traits<PolygonM
   return true;
 }
 
+// A split gives each of its two delimiters one more edge. Where the chain starts (S3) or ends (E2) with
+// a split delimited by the vertex `e` at the end of the path, an interior v5 `e` becomes a valence-6
+// vertex (two v5 merged), which the clean-up splits between two opposite neighbours, both interior of
+// valence 4, which become the two v5 (Chain_executor::split_valence_6()). The ring of `e` after the
+// chain is its ring before, r0 = `split_vertex`, r1, ..., r4 (in either rotation), in which r0 became
+// two vertices (the copies of the split): whichever side of r0 the new copy lies on, the three pairs
+// of opposite neighbours are (r1, r4) and two pairs containing r2 and r3 respectively. The split changes
+// the valences of the split vertex and its two delimiters only; when none of r1..r4 is a path vertex or
+// next to a path vertex other than `e` and `split_vertex`, the earlier operations do not reach them
+// either, and the clean-up is impossible exactly when neither r2 nor r3 is an interior vertex of
+// valence 4, and r1 and r4 are not both. (test_qzip forces every plan refused so through the executor:
+// each one fails in the clean-up.)
+template <typename PolygonMesh>
+bool leaves_valence_6_without_cleanup(typename boost::graph_traits<PolygonMesh>::vertex_descriptor e,
+                                      typename boost::graph_traits<PolygonMesh>::vertex_descriptor split_vertex,
+                                      const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& path,
+                                      const PolygonMesh& pm)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  if(is_border_vertex(e, pm) || valence(e, pm) != 5) return false;
+  std::vector<vertex_descriptor> ring; // r0 = split_vertex, then around e
+  for(auto h : halfedges_around_target(halfedge(split_vertex, e, pm).first, pm)) ring.push_back(source(h, pm));
+  for(std::size_t k = 1; k < ring.size(); ++k)
+    for(vertex_descriptor p : path)
+      if(p != e && (p == ring[k] || (p != split_vertex && halfedge(p, ring[k], pm).second))) return false;
+  auto regular = [&pm](vertex_descriptor v) { return !is_border_vertex(v, pm) && valence(v, pm) == 4; };
+  return !regular(ring[2]) && !regular(ring[3]) && !(regular(ring[1]) && regular(ring[4]));
+}
+
 } // namespace internal
 
 /*!
@@ -308,6 +337,12 @@ plan_qzip(const PolygonMesh& pm,
   }
   if(st == Plan_status::REALIZABLE && !internal::is_simple_edge_path(plan.path, pm))
     st = Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT;
+  // a split is delimited by the guide that the operation before it leaves (Chain_executor): the first
+  // operation has none, and the execution would stop there. The start rules give the first vertex a
+  // collapse or a no-operation, but its tag may be rotated into a split afterwards: by the removal of a
+  // fold at the start of a re-routed path (n -> d -> n) or by the end rule of a short path.
+  if(st == Plan_status::REALIZABLE && is_split(plan.operations[0]))
+    st = Plan_status::SPLIT_WITHOUT_GUIDE;
   if(st != Plan_status::REALIZABLE) { plan.status = st; return plan; }
 
   // every vertex the chain operates on is a path vertex or one of its neighbours: keep the path away
@@ -346,6 +381,14 @@ plan_qzip(const PolygonMesh& pm,
     if(far_on_border && (!internal::is_border_vertex(plan.path[j], pm) || internal::is_border_vertex(plan.path[j + 1], pm)))
     { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
   }
+  // a v5 at an end of the path that a split delimits and that the clean-up could not split again
+  const std::size_t n = plan.path.size();
+  if(n >= 3 && plan.operations[0] == Strip_operation::NO_OPERATION && is_split(plan.operations[1]) &&
+     internal::leaves_valence_6_without_cleanup(plan.path[0], plan.path[1], plan.path, pm))
+  { plan.status = Plan_status::VALENCE_6_LEFT; return plan; }
+  if(n >= 2 && is_split(plan.operations[n - 2]) &&
+     internal::leaves_valence_6_without_cleanup(plan.path[n - 1], plan.path[n - 2], plan.path, pm))
+  { plan.status = Plan_status::VALENCE_6_LEFT; return plan; }
   plan.status = plan.number_of_collapses() + plan.number_of_splits() == 0 ? Plan_status::NOTHING_TO_DO
                                                                           : Plan_status::REALIZABLE;
   return plan;
