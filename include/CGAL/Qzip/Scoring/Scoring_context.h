@@ -412,7 +412,7 @@ public:
     if(i < 0) return nb;
     nb.feature_distance = feature_dist[std::size_t(i)];
     const int i1 = x1 == GT::null_vertex() ? -1 : index(x1), i2 = x2 == GT::null_vertex() ? -1 : index(x2);
-    n = (std::min)(n, max_nearest_singularities);
+    n = (std::min)(n, std::size_t(max_nearest_singularities)); // by value: std::min binds references, and the member has no definition
     compute_nearest(i, i1, i2, n);
     const std::size_t K = max_nearest_singularities;
     for(std::size_t k = std::size_t(i) * K; k < std::size_t(i) * K + near_labels.count[std::size_t(i)] && nb.size < n; ++k)
