@@ -3,9 +3,10 @@
 // usage: move_singularity_pair IN OUT [--source V --target W] [--motion 0-3] [--random N] [--seed S] [--json]
 //
 // The input is preprocessed first (interior valences brought to 3..5). V and W are 0-based vertex indices
-// of the preprocessed mesh (the input's own indices when it needed no preprocessing); V is an interior
-// singularity, W one too or a border vertex with one quad too many (a border defect, moved along the
-// border). Without them, the closest pair of interior singularities is moved; with --random N, N random
+// of the preprocessed mesh (the input's own indices when it needed no preprocessing); one of them is an
+// interior singularity, the other one too or a border vertex with one quad too many or too few (a border
+// defect: the Q-zip then runs from the interior singularity and moves the defect along the border, or
+// cancels it). Without them, the closest pair of interior singularities is moved; with --random N, N random
 // realizable Q-zips between nearby singularities (border defects included) are performed. --motion picks the initial compass operation (0 LS, 1 RC, 2 LC,
 // 3 RS); by default the first realizable one. OUT is written atomically; the input is never overwritten.
 
@@ -63,11 +64,11 @@ bool is_singular(Vertex v, const Mesh& m)
   return !CGAL::is_border(v, m) && (d == 3 || d == 5);
 }
 
-// a border vertex with one quad too many: a Q-zip may end there (plan_qzip() refuses it when the
-// border is not straight there)
-bool is_border_target(Vertex v, const Mesh& m)
+// a border vertex with one quad too many or too few: a Q-zip may end there (plan_qzip() refuses it when
+// the border is not straight there, or when a -1 is not reached along the border)
+bool is_border_end(Vertex v, const Mesh& m)
 {
-  return CGAL::is_border(v, m) && Q::vertex_defect(v, m) == 1;
+  return CGAL::is_border(v, m) && std::abs(Q::vertex_defect(v, m)) == 1;
 }
 
 // the interior singularities (and, with `border`, the border targets) within `radius` edges of `s`,
@@ -81,7 +82,7 @@ std::vector<Vertex> nearby_singularities(const Mesh& m, Vertex s, int radius, bo
   while(!queue.empty())
   {
     const Vertex v = queue.front(); queue.pop_front();
-    if(v != s && (is_singular(v, m) || (border && is_border_target(v, m)))) out.push_back(v);
+    if(v != s && (is_singular(v, m) || (border && is_border_end(v, m)))) out.push_back(v);
     if(dist[v] == radius) continue;
     for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
       if(dist.emplace(source(h, m), dist[v] + 1).second) queue.push_back(source(h, m));
@@ -201,8 +202,9 @@ int main(int argc, char** argv)
     if(std::size_t(source) >= num_vertices(mesh) || std::size_t(target) >= num_vertices(mesh) || source == target)
     { std::cerr << "error: --source/--target must be two distinct vertex indices below " << num_vertices(mesh) << std::endl; return EXIT_FAILURE; }
     const Vertex s(static_cast<Mesh::size_type>(source)), t(static_cast<Mesh::size_type>(target));
-    if(!is_singular(s, mesh) || !(is_singular(t, mesh) || is_border_target(t, mesh)))
-    { std::cerr << "error: --source must be an interior vertex of valence 3 or 5, --target too or a border vertex with one quad too many (after preprocessing)" << std::endl; return EXIT_FAILURE; }
+    if(!(is_singular(s, mesh) && (is_singular(t, mesh) || is_border_end(t, mesh))) &&
+       !(is_border_end(s, mesh) && is_singular(t, mesh)))
+    { std::cerr << "error: one of --source/--target must be an interior vertex of valence 3 or 5 (after preprocessing), the other one too or a border vertex with one quad too many or too few" << std::endl; return EXIT_FAILURE; }
     reports.push_back(move_pair(mesh, s, t, int(motion)));
   }
   else if(random > 0)
