@@ -224,9 +224,8 @@ public:
     for(std::size_t q = 0; q < near_queue.size(); ++q)
     {
       const int u = near_queue[std::size_t(q)];
-      const std::size_t k = get(kept_index, by_index[std::size_t(u)]);
-      if(k != 0 && k <= kept.size() && kept[k - 1].owner == by_index[std::size_t(u)] && kept[k - 1].radius >= level[q])
-        forget(k);
+      const std::size_t k = kept_slot(by_index[std::size_t(u)]);
+      if(k != 0 && kept[k - 1].radius >= level[q]) forget(k);
       if(level[q] >= kept_radius) continue;
       for(const int* w = neighbors_begin(u); w != neighbors_end(u); ++w)
       {
@@ -240,6 +239,14 @@ public:
   }
 
 private:
+  // 1 + the index of the entry of v in `kept`, or 0 if it has none (an entry recycled for another vertex
+  // does not count)
+  std::size_t kept_slot(vertex_descriptor v) const
+  {
+    const std::size_t k = get(kept_index, v);
+    return k != 0 && k <= kept.size() && kept[k - 1].owner == v ? k : 0;
+  }
+
   void forget(std::size_t k) const
   {
     put(kept_index, kept[k - 1].owner, 0);
@@ -387,19 +394,7 @@ public:
   /// the distance from `v` to the closest border or feature vertex.
   Neighborhood nearest_singularities(vertex_descriptor v) const
   {
-    Neighborhood nb;
-    const int i = index(v);
-    if(i < 0) return nb;
-    nb.feature_distance = feature_dist[std::size_t(i)];
-    const std::size_t K = max_nearest_singularities;
-    compute_nearest(i, -1, -1, max_nearest_singularities);
-    for(std::size_t k = std::size_t(i) * K; k < std::size_t(i) * K + near_labels.count[std::size_t(i)]; ++k)
-    {
-      const int j = near_labels.source[k];
-      if(j == i) continue;
-      nb.items[nb.size++] = Nearby{ by_index[std::size_t(j)], defects[std::size_t(j)], near_labels.distance[k] };
-    }
-    return nb;
+    return nearest_singularities(v, GT::null_vertex(), GT::null_vertex(), max_nearest_singularities);
   }
 
   /// the first `n` of the singularities of `nearest_singularities(v)` other than `x1` and `x2` (fewer if
@@ -411,7 +406,7 @@ public:
     const int i = index(v);
     if(i < 0) return nb;
     nb.feature_distance = feature_dist[std::size_t(i)];
-    const int i1 = x1 == GT::null_vertex() ? -1 : index(x1), i2 = x2 == GT::null_vertex() ? -1 : index(x2);
+    const int i1 = index_or_none(x1), i2 = index_or_none(x2);
     n = (std::min)(n, std::size_t(max_nearest_singularities)); // by value: std::min binds references, and the member has no definition
     compute_nearest(i, i1, i2, n);
     const std::size_t K = max_nearest_singularities;
@@ -431,7 +426,7 @@ public:
   {
     const int i = index(v);
     if(i < 0) return -1;
-    const int i1 = x1 == GT::null_vertex() ? -1 : index(x1), i2 = x2 == GT::null_vertex() ? -1 : index(x2);
+    const int i1 = index_or_none(x1), i2 = index_or_none(x2);
     compute_nearest(i, i1, i2, max_nearest_singularities, sign);
     const std::size_t K = max_nearest_singularities;
     for(std::size_t k = std::size_t(i) * K; k < std::size_t(i) * K + near_labels.count[std::size_t(i)]; ++k)
@@ -546,6 +541,8 @@ public:
 
   // the mesh as it was at the start of the batch, by vertex index (-1: a vertex created since)
   int index(vertex_descriptor v) const { return get(stamp, v) == epoch ? get(index_map, v) : -1; }
+  // the same, with -1 for null_vertex() too
+  int index_or_none(vertex_descriptor v) const { return v == GT::null_vertex() ? -1 : index(v); }
   vertex_descriptor vertex(int i) const { return by_index[std::size_t(i)]; }
   int defect_at(int i) const { return defects[std::size_t(i)]; }
   // interior, on no constrained edge and no protected face
@@ -558,7 +555,6 @@ public:
 
 private:
 
-  // the number of labels of vertex i other than i, x1 and x2 (indices, -1 for none)
   // whether the labels of vertex i (a beginning of the list of its closest singularities) answer a query:
   // they hold n singularities other than i, x1 and x2, or (`sign` not 0) one of them has a defect of the
   // sign opposite to `sign`
@@ -647,8 +643,8 @@ private:
   {
     const std::size_t K = max_nearest_singularities;
     const vertex_descriptor v = by_index[std::size_t(i)];
-    std::size_t k = get(kept_index, v);
-    if(k == 0 || k > kept.size() || kept[k - 1].owner != v)
+    std::size_t k = kept_slot(v);
+    if(k == 0)
     {
       if(kept_free.empty()) { kept.emplace_back(); k = kept.size(); }
       else { k = kept_free.back() + 1; kept_free.pop_back(); }
@@ -675,29 +671,26 @@ private:
   {
     const std::size_t K = max_nearest_singularities;
     const vertex_descriptor v = by_index[std::size_t(i)];
-    const std::size_t k = get(kept_index, v);
-    if(k == 0 || k > kept.size()) return false;
+    const std::size_t k = kept_slot(v);
+    if(k == 0) return false;
     const Kept& e = kept[k - 1];
-    if(e.owner != v || !(e.position == get(vpm, v))) return false;
-    std::size_t others = 0;
-    bool opposite = false;
+    if(!(e.position == get(vpm, v))) return false;
     for(std::size_t j = 0; j < e.count; ++j)
     {
       const int l = index(e.label[j]);
       if(l < 0 || ranks[std::size_t(l)] < 0 || !(e.label_position[j] == get(vpm, e.label[j]))) return false;
-      if(l == i || l == x1 || l == x2) continue;
-      ++others;
-      opposite = opposite || defects[std::size_t(l)] * sign < 0;
     }
-    if(!e.complete && others < n && !opposite) return false;
-    near_known[std::size_t(i)] = epoch;
-    near_complete[std::size_t(i)] = e.complete ? 1 : 0;
+    // the labels still hold: they answer the query if the search was complete or if labels_answer() says so
+    // (until near_known is stamped, the labels copied here are not read by anything else)
     near_labels.count[std::size_t(i)] = static_cast<unsigned char>(e.count);
     for(std::size_t j = 0; j < e.count; ++j)
     {
       near_labels.source[std::size_t(i) * K + j] = index(e.label[j]);
       near_labels.distance[std::size_t(i) * K + j] = e.distance[j];
     }
+    if(!e.complete && !labels_answer(i, x1, x2, n, sign)) return false;
+    near_known[std::size_t(i)] = epoch;
+    near_complete[std::size_t(i)] = e.complete ? 1 : 0;
     return true;
   }
 

@@ -105,7 +105,6 @@ class Batch_optimizer
   std::vector<vertex_descriptor> edited_vertices; // the scars of the surgeries of the batch (see Scoring_context::begin_batch())
   std::size_t best_pairing_distance = 0; // the smallest pairing distance since the count last decreased
   std::set<Surgery_key> rejected; // end-game surgeries executed and undone, not to be tried again
-  std::size_t end_game_attempts = 0; // end-game surgeries executed in the last round
 
 public:
   Batch_optimizer(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
@@ -419,14 +418,6 @@ private:
   // whether v is singular (the context's definition of the defect, on the mesh as it is now)
   bool is_singular_now(vertex_descriptor v) const
   {
-    bool cut = false;
-    int valence = 0;
-    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-    {
-      ++valence;
-      if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) cut = true;
-    }
-    if(!cut) return valence != 4;
     typedef typename Kernel_traits<Point>::Kernel Kernel;
     return internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect != 0;
   }
@@ -562,8 +553,9 @@ private:
   // One batch (Sec. 4.1), or one round of the end game: every singularity that can start a surgery and
   // has one of the opposite sign within two edges (a landing that cancels is next to the source or to
   // the target) tries all its improving candidates predicted to cancel singularities, best predictions
-  // first, and a surgery is kept only if the singularities near its path are actually fewer.
-  void run_batch(bool end_game)
+  // first, and a surgery is kept only if the singularities near its path are actually fewer. Returns the
+  // number of surgeries executed (kept, undone or rolled back).
+  std::size_t run_batch(bool end_game)
   {
     ++batch_epoch;
     CGAL::Real_timer score_timer, exec_timer;
@@ -612,12 +604,11 @@ private:
     if(!end_game) visitor.on_batch_scored(stats, chosen.size());
 
     exec_timer.start();
-    const std::size_t attempts = stats.number_of_surgeries + stats.number_of_undone_surgeries + stats.number_of_failed_surgeries;
-    end_game_attempts = 0;
+    std::size_t executed = 0;
     for(const Scored& c : chosen)
-      if(execute(c, plan_np, end_game) != SKIPPED) ++end_game_attempts;
+      if(execute(c, plan_np, end_game) != SKIPPED) ++executed;
     // an undone or rolled back surgery may give new descriptors to the vertices it re-created
-    const bool edited = stats.number_of_surgeries + stats.number_of_undone_surgeries + stats.number_of_failed_surgeries != attempts;
+    const bool edited = executed > 0;
 
     // smoothing near all the scars of the batch
     if(settings.smooth && stats.surgeries_in_last_batch > 0)
@@ -630,17 +621,20 @@ private:
     exec_timer.stop();
     stats.execution_seconds += exec_timer.time();
 
-    if(edited) singular = ctx.begin_batch(edited_vertices); // else the mesh and the context are as they were
+    if(edited) // else the mesh, the context and the pairing distance are as they were
+    {
+      singular = ctx.begin_batch(edited_vertices);
+      stats.pairing_distance = pairing_distance();
+    }
     edited_vertices.clear();
     const std::size_t before = stats.number_of_singularities;
     stats.number_of_singularities = singular.size();
     stats.number_of_faces = faces(pm).size();
-    stats.pairing_distance = pairing_distance();
     stats.elapsed_seconds = timer.time();
     if(end_game)
     {
       ++stats.end_game_rounds;
-      return;
+      return executed;
     }
     stats.batches_without_improvement = singular.size() < before ? 0 : stats.batches_without_improvement + 1;
     if(singular.size() < before || stats.pairing_distance < best_pairing_distance)
@@ -651,6 +645,7 @@ private:
     else ++stats.batches_without_progress;
     ++stats.batch;
     visitor.on_batch_finished(stats);
+    return executed;
   }
 
   // the end game, once the batches stop: rounds (see run_batch()) as long as they try surgeries; a
@@ -661,8 +656,7 @@ private:
     const std::size_t initial = stats.number_of_singularities;
     for(std::size_t round = 0; round < settings.max_end_game_rounds; ++round)
     {
-      run_batch(true);
-      if(end_game_attempts == 0) break;
+      if(run_batch(true) == 0) break;
     }
     best_pairing_distance = stats.pairing_distance;
     return stats.number_of_singularities < initial;
