@@ -42,9 +42,6 @@ enum class Reverse_qzip_status
   /// the valence-6 vertex its prelude re-created has several admissible splits, and the executor's
   /// clean-up might not choose the one undone
   CLEANED_UP,
-  /// the Q-zip moved a defect along the border (a border target): the reverse would have to collapse
-  /// a quad between two border vertices, which `quad_collapse()` may not do
-  BORDER_DEFECT_MOVED,
   GUIDE_NOT_RESTORABLE     ///< two consecutive collapses of the chain share no corner the reverse split can be guided by
 };
 
@@ -144,10 +141,12 @@ namespace internal {
 // on its right after RC (the split vertex itself). The clean-up (a valence-2 vertex merged into its far
 // corner, a valence-6 vertex split) is undone first, by the inverse atomic operations in reverse order
 // (Surgery_plan::prelude), named by vertices of the mesh after the Q-zip; a path vertex the clean-up merged
-// away is the vertex created by the inverse split. Refused: Q-zips that cancelled singularities (a Q-zip
-// never creates one), Q-zips that moved a border defect (the inverse of the last split would collapse a
-// quad between two border vertices), clean-ups whose operations involve a vertex a later clean-up removed,
-// and redos whose clean-up would have a choice (check_valence_6()).
+// away is the vertex created by the inverse split. A Q-zip that moved a border defect ends with the split
+// of the border target t along the border edge t->e; only one copy of t keeps the border gap, so the
+// inverse collapse never merges two border vertices (a border copy merged into the interior one gives it
+// its place on the border, see Chain_executor::collapse()). Refused: Q-zips that cancelled singularities
+// (a Q-zip never creates one), clean-ups whose operations involve a vertex a later clean-up removed, and
+// redos whose clean-up would have a choice (check_valence_6()).
 // The recorder watches the execution as a visitor and forwards every call to the user's visitor; it
 // costs a few vectors of the path's length, and a search of the path per collapse.
 template <typename PolygonMesh, typename UserVisitor>
@@ -315,7 +314,6 @@ public:
     if(!r.is_done()) return;
     if(cancelled) { r.reverse_status = Reverse_qzip_status::SINGULARITIES_CANCELLED; return; }
     if(refusal != Reverse_qzip_status::AVAILABLE) { r.reverse_status = refusal; return; }
-    if(is_border_vertex(names.back(), pm)) { r.reverse_status = Reverse_qzip_status::BORDER_DEFECT_MOVED; return; }
     // the inverse of a clean-up operation is named by vertices of the final mesh: none may have been
     // removed by a later clean-up
     for(std::size_t m = 0; m < cleanups.size(); ++m)
@@ -461,9 +459,10 @@ redoes the Q-zip.
 When the Q-zip needed the valence-2/valence-6 clean-up, the reverse plan first undoes it
 (`Surgery_plan::prelude`); when a collapse of the Q-zip merged away a vertex of the path it had already
 visited, the reverse plan names that vertex as the one a split of its own chain re-creates
-(`Surgery_plan::created_vertices`). A Q-zip has no reverse Q-zip (see `Reverse_qzip_status`) when it
-cancelled singularities (a Q-zip never creates any), when it moved a defect along the border, or in the
-rare clean-ups that cannot be undone first; `done.reverse_status` says which. Like every execution the
+(`Surgery_plan::created_vertices`). A Q-zip that moved a border defect is reversed like any other: the
+reverse starts at the border vertex the defect moved to. A Q-zip has no reverse Q-zip (see
+`Reverse_qzip_status`) when it cancelled singularities (a Q-zip never creates any), or in the rare
+clean-ups that cannot be undone first; `done.reverse_status` says which. Like every execution the
 reverse is transactional: if it cannot be completed the mesh is restored.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`

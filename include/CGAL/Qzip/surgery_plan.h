@@ -299,8 +299,9 @@ plan_qzip(const PolygonMesh& pm,
   };
   const bool border_target = internal::is_border_vertex(plan.target, pm);
   const std::pair<int, int> target_defect = border_target ? defect_and_expected_faces(plan.target) : std::make_pair(0, 0);
-  const bool quad_too_few = target_defect == std::make_pair(-1, 2);
-  const bool target_supported = border_target ? (target_defect == std::make_pair(1, 2) || quad_too_few)
+  const bool quad_too_few = target_defect.first == -1;
+  const bool target_supported = border_target ? internal::Endpoint_preparation<PolygonMesh>::is_supported_border_end(
+                                                  target_defect.first, target_defect.second)
                                               : (plan.target_valence == 3 || plan.target_valence == 5);
   if(!target_supported) { plan.status = Plan_status::UNSUPPORTED_ENDPOINT; return plan; }
 
@@ -324,7 +325,7 @@ plan_qzip(const PolygonMesh& pm,
     internal::transport_compass(plan.path, plan.operations, (std::min)(retransport_from, first_fold + 1), pm);
   const Strip_operation start_tag = plan.operations[0];
   if(st == Plan_status::REALIZABLE)
-    st = border_target ? prep.prepare_border_end(plan.path, plan.operations, quad_too_few)
+    st = border_target ? prep.prepare_border_end(plan.path, plan.operations, quad_too_few, target_defect.second)
                        : prep.prepare_end(plan.path, plan.operations, initial_operation, transport);
   if(st == Plan_status::REALIZABLE && plan.path[0] == plan.source && plan.operations[0] != start_tag &&
      is_split(plan.operations[0]))
@@ -333,7 +334,7 @@ plan_qzip(const PolygonMesh& pm,
   if(st == Plan_status::REALIZABLE && border_target && !quad_too_few)
   {
     const std::pair<int, int> e = defect_and_expected_faces(plan.path.back()); // regular, or one quad short: cancels
-    if(e.second != 2 || (e.first != 0 && e.first != -1)) st = Plan_status::ENDPOINT_ADJUSTMENT;
+    if(e.first != 0 && e.first != -1) st = Plan_status::ENDPOINT_ADJUSTMENT;
   }
   if(st == Plan_status::REALIZABLE && !internal::is_simple_edge_path(plan.path, pm))
     st = Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT;
