@@ -216,7 +216,9 @@ Stats stress(const std::string& file, long count, unsigned seed, std::size_t dep
           // the reverse Q-zip, recorded and undone at once
           const std::uint64_t after = R::geometry_hash(mesh);
           const Q::Qzip_result<Mesh> back = Q::execute_qzip(mesh, r.reverse_plan, history);
-          if(!back.is_done() || !qzip_test::are_isomorphic(mesh, copy_before)) violation("a reverse Q-zip did not restore the mesh");
+          if(!back.is_done())
+            violation(("a reverse Q-zip rolled back: " + std::string(Q::describe(back.failure))).c_str());
+          else if(!qzip_test::are_isomorphic(mesh, copy_before)) violation("a reverse Q-zip did not restore the mesh");
           if(back.is_done())
           {
             ++st.border_moves_reversed;

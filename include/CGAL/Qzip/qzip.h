@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -308,8 +309,10 @@ public:
   }
 
   // fills r.reverse_status and r.reverse_plan after the execution; `cancelled`: the executor saw
-  // singularities cancelled (interior valences or border defects)
-  void make_reverse(Qzip_result<PolygonMesh>& r, bool cancelled) const
+  // singularities cancelled (interior valences or border defects); `expected_faces`: the numbers of faces
+  // the executor judged the live border vertices by, which the reverse judges them by too
+  void make_reverse(Qzip_result<PolygonMesh>& r, bool cancelled,
+                    std::vector<std::pair<vertex_descriptor, int> > expected_faces) const
   {
     if(!r.is_done()) return;
     if(cancelled) { r.reverse_status = Reverse_qzip_status::SINGULARITIES_CANCELLED; return; }
@@ -334,6 +337,7 @@ public:
     rev.prelude.clear();
     for(std::size_t m = cleanups.size(); m-- > 0; ) rev.prelude.push_back(cleanups[m].inverse);
     rev.created_vertices.clear();
+    rev.expected_faces = std::move(expected_faces);
     // names the reverse path vertex at position p, which is `v` at the end of the Q-zip
     auto name = [&](std::size_t p, vertex_descriptor v, const Merge* by_chain)
     {
@@ -375,7 +379,7 @@ Qzip_result<PolygonMesh> run_qzip(PolygonMesh& pm, Operation_log<PolygonMesh, Ve
   const auto np_recording = np.visitor(std::ref(recorder));
   Chain_executor<PolygonMesh, VertexPointMap, std::decay_t<decltype(np_recording)> > exec(pm, log, np_recording);
   Qzip_result<PolygonMesh> r = exec.run(plan);
-  recorder.make_reverse(r, exec.cancelled_singularities());
+  recorder.make_reverse(r, exec.cancelled_singularities(), exec.expected_faces_of_live_vertices());
   return r;
 }
 

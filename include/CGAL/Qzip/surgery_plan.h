@@ -79,6 +79,10 @@ struct Surgery_plan
   /// reverse plans only, empty otherwise: the vertices of `path` that do not exist before the
   /// execution (the Q-zip that the plan reverses merged them away), by increasing `index`
   std::vector<Created_vertex> created_vertices;
+  /// reverse plans only, empty otherwise: the number of faces that border vertices should have, as the
+  /// Q-zip that the plan reverses judged them (from the geometry before it); the execution judges their
+  /// defects with these numbers, whatever the rough placement of that Q-zip did to the border angles
+  std::vector<std::pair<vertex_descriptor, int> > expected_faces;
 
   /// `true` when `status` is `REALIZABLE`.
   bool is_realizable() const { return status == Plan_status::REALIZABLE; }
@@ -212,8 +216,9 @@ bool leaves_valence_6_without_cleanup(typename boost::graph_traits<PolygonMesh>:
 
 plans a Q-zip along `sketch`, a simple edge path from the initial singularity `sketch.front()` (an
 interior vertex of valence 3 or 5) to the terminal singularity `sketch.back()` (the same, or a border
-vertex with one quad too many on a straight piece of border, whose defect then moves by one border
-edge, or with one quad too few, reached along the border), with `initial_operation` as the compass at
+vertex with one quad too many on a straight piece of border or at a corner, whose defect then moves by
+one border edge, or with one quad too few on a straight piece of border, reached along the border, or at
+a concave corner; see the user manual, "Border End Points"), with `initial_operation` as the compass at
 the initial singularity (one of the four motions of the pair). When `sketch.front()` is such a border
 vertex and `sketch.back()` an interior one, the plan is that of the reversed sketch: the chain starts at
 the interior singularity (`plan.source == sketch.back()`), and `initial_operation` is the compass there.

@@ -106,11 +106,12 @@ public:
   }
 
   // The border ends supported: a border vertex with one quad too many or too few, on a straight piece of
-  // border (two quads expected) or at a concave corner (three quads expected). Convex corners (one quad
-  // expected) can receive a defect (as the vertex e below) but are not supported as ends.
+  // border (two quads expected) or at a concave corner (three quads expected), or with one quad too many
+  // at a convex corner (one quad expected; it cannot have one too few).
   static bool is_supported_border_end(int defect, int expected_faces)
   {
-    return (defect == 1 || defect == -1) && (expected_faces == 2 || expected_faces == 3);
+    return (defect == 1 && expected_faces >= 1 && expected_faces <= 3) ||
+           (defect == -1 && (expected_faces == 2 || expected_faces == 3));
   }
 
   // A border end t with one quad too many (defect +1; a border end with one quad too few cannot be
@@ -138,6 +139,10 @@ public:
   // 2 after LS, valence - 2 after RS), whichever side of it the gap lies, and t repeats the split; with one
   // quad too few (two quads, valence 3), the path arrives from the interior neighbour after a collapse
   // and ends at t (E1). Arrivals along the border at a concave corner are refused (not enumerated).
+  // At a convex corner with one quad too many (two quads, valence 3) the path arrives from the interior
+  // neighbour after a collapse, and the rule of a straight border applies; after a split nothing moved
+  // the defect, and along the border the straight rule worked for some arrivals only (the others roll
+  // back, for a reason we have not characterised): both are refused.
   Plan_status prepare_border_end(Path& path, Operations& ops, bool quad_too_few, int expected_faces) const
   {
     const std::size_t n = path.size();
@@ -147,6 +152,7 @@ public:
     const halfedge_descriptor ut = out(u, t);
     const bool concave = expected_faces == 3;
     if(concave && is_border_edge(ut, pm)) return Plan_status::ENDPOINT_ADJUSTMENT;
+    if(expected_faces == 1 && (is_border_edge(ut, pm) || is_split(last))) return Plan_status::ENDPOINT_ADJUSTMENT;
     if(quad_too_few)
     {
       if(concave) return is_collapse(last) ? Plan_status::REALIZABLE : Plan_status::ENDPOINT_ADJUSTMENT;
