@@ -464,7 +464,9 @@ When the Q-zip needed the valence-2/valence-6 clean-up, the reverse plan first u
 (`Surgery_plan::prelude`); when a collapse of the Q-zip merged away a vertex of the path it had already
 visited, the reverse plan names that vertex as the one a split of its own chain re-creates
 (`Surgery_plan::created_vertices`). A Q-zip that moved a border defect is reversed like any other: the
-reverse starts at the border vertex the defect moved to. A Q-zip has no reverse Q-zip (see
+reverse starts at the border end of its path. Border defects depend on the corner angles, which the
+placement of the Q-zip may have changed: the reverse plan judges them with the numbers of faces the Q-zip
+judged them by (`Surgery_plan::expected_faces`). A Q-zip has no reverse Q-zip (see
 `Reverse_qzip_status`) when it cancelled singularities (a Q-zip never creates any), or in the rare
 clean-ups that cannot be undone first; `done.reverse_status` says which. Like every execution the
 reverse is transactional: if it cannot be completed the mesh is restored.
