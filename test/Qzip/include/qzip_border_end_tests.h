@@ -1,5 +1,5 @@
-// Tests of border end points: every Q-zip that moved a border defect is undone by its reverse Q-zip
-// (`Qzip::reverse_qzip()`), and redone by the reverse of the reverse.
+// Tests of border end points (straight pieces of border and corners): every Q-zip that moved a border
+// defect is undone by its reverse Q-zip (`Qzip::reverse_qzip()`), and redone by the reverse of the reverse.
 #ifndef QZIP_BORDER_END_TESTS_H
 #define QZIP_BORDER_END_TESTS_H
 
@@ -11,8 +11,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdlib>
 #include <cassert>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 #include <set>
@@ -41,10 +41,8 @@ struct Border_move_counters
     std::cout << "  " << what << ": " << done << " done (" << cancelling << " cancelling singularities, " << moved
               << " moving a border defect), " << reversed << " of the moves undone by their reverse Q-zip (isomorphic), "
               << redone << " redone by the reverse of the reverse and undone again (" << redo_refused << " redos refused), "
-              << rolled_back
-              << " rolled back; " << from_concave_corner << " from a concave corner, " << from_convex_corner
-              << " from a convex corner, " << onto_corner
-              << " onto a corner" << std::endl;
+              << rolled_back << " rolled back; " << from_concave_corner << " from a concave corner, "
+              << from_convex_corner << " from a convex corner, " << onto_corner << " onto a corner" << std::endl;
   }
 };
 
