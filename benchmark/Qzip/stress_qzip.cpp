@@ -6,8 +6,12 @@
 //  * a done Q-zip leaves a valid polygon mesh with the same Euler characteristic, non-quad faces and border
 //    (a Q-zip to a border defect may lengthen its border cycle by one edge, never change the cycles);
 //  * every undo gives back exactly the mesh before the Q-zip, and the full unwind the preprocessed mesh;
+//  * every Q-zip to a border defect has a reverse Q-zip unless it cancelled singularities (or, rarely, its
+//    clean-up cannot be undone first); the reverse gives back a mesh isomorphic to the one before the
+//    Q-zip, and is recorded in the history and undone at once, which gives back exactly the mesh after it;
 //  * no exception escapes.
-// Reports per mesh: Q-zips tried, done, refused (by the planner / at execution), undone, invariant
+// Reports per mesh: Q-zips tried, done, refused (by the planner / at execution), border defects moved and
+// reversed, undone, invariant
 // violations, time, resident memory after the mesh and the peak resident memory of the process.
 //
 // Usage: stress_qzip [--count N] [--seed S] [--depth D] [--check-every K] [PATH...]
@@ -56,6 +60,7 @@ struct Stats
   std::string name;
   std::size_t vertices = 0, faces = 0, singular = 0;
   long tried = 0, done = 0, done_to_border = 0, done_along_border = 0, refused_plan = 0, refused_execution = 0, undone = 0, violations = 0;
+  long border_moves_reversed = 0;
   double seconds = 0;
   long rss_kb = 0;
   std::string status;
@@ -180,6 +185,8 @@ Stats stress(const std::string& file, long count, unsigned seed, std::size_t dep
       const std::uint64_t before = R::geometry_hash(mesh);
       const std::size_t recorded = history.size();
       const bool border_target = static_cast<bool>(CGAL::is_border(t, mesh));
+      Mesh copy_before; // to check the reverse of a Q-zip to a border defect
+      if(border_target) qzip_test::copy_mesh(mesh, copy_before);
       const Q::Qzip_result<Mesh> r = Q::execute_qzip(mesh, plan, history);
       if(!r.is_done())
       {
@@ -201,7 +208,28 @@ Stats stress(const std::string& file, long count, unsigned seed, std::size_t dep
       if(!now.same_up_to_border_length(shape0) || now.border_halfedges < border_lengths.back() ||
          added > (border_target ? 1u : 0u))
         violation("a Q-zip changed the Euler characteristic, a non-quad face or the border");
-      if(border_target) ++st.done_to_border;
+      if(border_target)
+      {
+        ++st.done_to_border;
+        if(r.reverse_status == Q::Reverse_qzip_status::AVAILABLE)
+        {
+          // the reverse Q-zip, recorded and undone at once
+          const std::uint64_t after = R::geometry_hash(mesh);
+          const Q::Qzip_result<Mesh> back = Q::execute_qzip(mesh, r.reverse_plan, history);
+          if(!back.is_done())
+            violation(("a reverse Q-zip rolled back: " + std::string(Q::describe(back.failure))).c_str());
+          else if(!qzip_test::are_isomorphic(mesh, copy_before)) violation("a reverse Q-zip did not restore the mesh");
+          if(back.is_done())
+          {
+            ++st.border_moves_reversed;
+            Q::undo_qzip(history);
+            if(R::geometry_hash(mesh) != after) violation("the undo of a reverse Q-zip did not restore the mesh");
+          }
+        }
+        else if(r.reverse_status != Q::Reverse_qzip_status::SINGULARITIES_CANCELLED &&
+                r.reverse_status != Q::Reverse_qzip_status::CLEANED_UP)
+          violation("a Q-zip to a border defect has no reverse Q-zip");
+      }
       if(along_border) ++st.done_along_border;
       border_lengths.push_back(now.border_halfedges);
       if(rng() % 3 == 0) undo_last();
@@ -277,9 +305,9 @@ int main(int argc, char** argv)
 
   std::cout << "stress_qzip: " << files.size() << " files, " << count << " random Q-zips per mesh, seed " << seed << ", unwind depth " << depth
             << ", validity check every " << check_every << " done Q-zip(s)\n\n"
-            << "| mesh | V | F | singular | tried | done | done to a border defect | done along the border | refused (plan) | refused (execution) | undone | violations | time (s) | RSS after (MiB) | status |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|" << std::endl;
-  long files_tried = 0, loaded = 0, tried = 0, done = 0, done_to_border = 0, done_along_border = 0, refused = 0, undone = 0, violations = 0;
+            << "| mesh | V | F | singular | tried | done | done to a border defect | of which reversed | done along the border | refused (plan) | refused (execution) | undone | violations | time (s) | RSS after (MiB) | status |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|" << std::endl;
+  long files_tried = 0, loaded = 0, tried = 0, done = 0, done_to_border = 0, reversed = 0, done_along_border = 0, refused = 0, undone = 0, violations = 0;
   std::vector<std::string> refused_names;
   double seconds = 0;
   for(const std::string& f : files)
@@ -288,11 +316,11 @@ int main(int argc, char** argv)
     const Stats s = stress(f, count, unsigned(seed), std::size_t(depth), check_every);
     if(s.vertices == 0) { refused_names.push_back(s.name); continue; }
     ++loaded;
-    tried += s.tried; done += s.done; done_to_border += s.done_to_border; done_along_border += s.done_along_border; refused += s.refused_plan + s.refused_execution; undone += s.undone;
+    tried += s.tried; done += s.done; done_to_border += s.done_to_border; reversed += s.border_moves_reversed; done_along_border += s.done_along_border; refused += s.refused_plan + s.refused_execution; undone += s.undone;
     violations += s.violations;
     seconds += s.seconds;
     std::cout << "| " << s.name << " | " << s.vertices << " | " << s.faces << " | " << s.singular << " | " << s.tried
-              << " | " << s.done << " | " << s.done_to_border << " | " << s.done_along_border << " | " << s.refused_plan << " | " << s.refused_execution << " | " << s.undone << " | "
+              << " | " << s.done << " | " << s.done_to_border << " | " << s.border_moves_reversed << " | " << s.done_along_border << " | " << s.refused_plan << " | " << s.refused_execution << " | " << s.undone << " | "
               << s.violations << " | " << std::fixed << std::setprecision(1) << s.seconds << " | "
               << std::setprecision(1) << double(s.rss_kb) / 1024. << " | " << s.status << " |" << std::endl;
   }
@@ -303,7 +331,8 @@ int main(int argc, char** argv)
     std::cout << std::endl;
   }
   std::cout << "\nfiles tried " << files_tried << ", meshes stressed " << loaded << ", Q-zips tried " << tried
-            << ", done " << done << " (" << done_to_border << " to a border defect, " << done_along_border
+            << ", done " << done << " (" << done_to_border << " to a border defect, " << reversed
+            << " of them reversed by their reverse Q-zip, " << done_along_border
             << " along the border), refused " << refused << ", undone " << undone << ", invariant violations "
             << violations << ", crashes 0; " << std::setprecision(1) << seconds << " s; peak RSS "
             << double(peak_rss_kb()) / 1024. << " MiB" << std::endl;

@@ -1,6 +1,7 @@
 // Tests of the Q-zip primitive: planning, execution, invariants, undo, homotopy invariance, refusals.
 #include "qzip_test_utils.h"
 #include "reverse_qzip_tests.h"
+#include "qzip_border_end_tests.h"
 
 #include <CGAL/Qzip/qzip.h>
 #include <CGAL/Qzip/preprocess.h>
@@ -1123,6 +1124,7 @@ int main(int argc, char** argv)
   test_border_paths();
 
   test_reverse_qzip(per_mesh / 3);
+  test_border_defect_reverse();
 
   Counters random_sm, random_ph;
   for(const std::string f : { "data/polylap_amo_quad.off", "data/pmp_fandisk_quads.off", "data/polylap_suzanne_half.obj",

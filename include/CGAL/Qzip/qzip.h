@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -42,9 +43,6 @@ enum class Reverse_qzip_status
   /// the valence-6 vertex its prelude re-created has several admissible splits, and the executor's
   /// clean-up might not choose the one undone
   CLEANED_UP,
-  /// the Q-zip moved a defect along the border (a border target): the reverse would have to collapse
-  /// a quad between two border vertices, which `quad_collapse()` may not do
-  BORDER_DEFECT_MOVED,
   GUIDE_NOT_RESTORABLE     ///< two consecutive collapses of the chain share no corner the reverse split can be guided by
 };
 
@@ -144,10 +142,12 @@ namespace internal {
 // on its right after RC (the split vertex itself). The clean-up (a valence-2 vertex merged into its far
 // corner, a valence-6 vertex split) is undone first, by the inverse atomic operations in reverse order
 // (Surgery_plan::prelude), named by vertices of the mesh after the Q-zip; a path vertex the clean-up merged
-// away is the vertex created by the inverse split. Refused: Q-zips that cancelled singularities (a Q-zip
-// never creates one), Q-zips that moved a border defect (the inverse of the last split would collapse a
-// quad between two border vertices), clean-ups whose operations involve a vertex a later clean-up removed,
-// and redos whose clean-up would have a choice (check_valence_6()).
+// away is the vertex created by the inverse split. A Q-zip that moved a border defect ends with the split
+// of the border target t along the border edge t->e; only one copy of t keeps the border gap, so the
+// inverse collapse never merges two border vertices (a border copy merged into the interior one gives it
+// its place on the border, see Chain_executor::collapse()). Refused: Q-zips that cancelled singularities
+// (a Q-zip never creates one), clean-ups whose operations involve a vertex a later clean-up removed, and
+// redos whose clean-up would have a choice (check_valence_6()).
 // The recorder watches the execution as a visitor and forwards every call to the user's visitor; it
 // costs a few vectors of the path's length, and a search of the path per collapse.
 template <typename PolygonMesh, typename UserVisitor>
@@ -309,13 +309,14 @@ public:
   }
 
   // fills r.reverse_status and r.reverse_plan after the execution; `cancelled`: the executor saw
-  // singularities cancelled (interior valences or border defects)
-  void make_reverse(Qzip_result<PolygonMesh>& r, bool cancelled) const
+  // singularities cancelled (interior valences or border defects); `expected_faces`: the numbers of faces
+  // the executor judged the live border vertices by, which the reverse judges them by too
+  void make_reverse(Qzip_result<PolygonMesh>& r, bool cancelled,
+                    std::vector<std::pair<vertex_descriptor, int> > expected_faces) const
   {
     if(!r.is_done()) return;
     if(cancelled) { r.reverse_status = Reverse_qzip_status::SINGULARITIES_CANCELLED; return; }
     if(refusal != Reverse_qzip_status::AVAILABLE) { r.reverse_status = refusal; return; }
-    if(is_border_vertex(names.back(), pm)) { r.reverse_status = Reverse_qzip_status::BORDER_DEFECT_MOVED; return; }
     // the inverse of a clean-up operation is named by vertices of the final mesh: none may have been
     // removed by a later clean-up
     for(std::size_t m = 0; m < cleanups.size(); ++m)
@@ -336,6 +337,7 @@ public:
     rev.prelude.clear();
     for(std::size_t m = cleanups.size(); m-- > 0; ) rev.prelude.push_back(cleanups[m].inverse);
     rev.created_vertices.clear();
+    rev.expected_faces = std::move(expected_faces);
     // names the reverse path vertex at position p, which is `v` at the end of the Q-zip
     auto name = [&](std::size_t p, vertex_descriptor v, const Merge* by_chain)
     {
@@ -377,7 +379,7 @@ Qzip_result<PolygonMesh> run_qzip(PolygonMesh& pm, Operation_log<PolygonMesh, Ve
   const auto np_recording = np.visitor(std::ref(recorder));
   Chain_executor<PolygonMesh, VertexPointMap, std::decay_t<decltype(np_recording)> > exec(pm, log, np_recording);
   Qzip_result<PolygonMesh> r = exec.run(plan);
-  recorder.make_reverse(r, exec.cancelled_singularities());
+  recorder.make_reverse(r, exec.cancelled_singularities(), exec.expected_faces_of_live_vertices());
   return r;
 }
 
@@ -461,9 +463,12 @@ redoes the Q-zip.
 When the Q-zip needed the valence-2/valence-6 clean-up, the reverse plan first undoes it
 (`Surgery_plan::prelude`); when a collapse of the Q-zip merged away a vertex of the path it had already
 visited, the reverse plan names that vertex as the one a split of its own chain re-creates
-(`Surgery_plan::created_vertices`). A Q-zip has no reverse Q-zip (see `Reverse_qzip_status`) when it
-cancelled singularities (a Q-zip never creates any), when it moved a defect along the border, or in the
-rare clean-ups that cannot be undone first; `done.reverse_status` says which. Like every execution the
+(`Surgery_plan::created_vertices`). A Q-zip that moved a border defect is reversed like any other: the
+reverse starts at the border end of its path. Border defects depend on the corner angles, which the
+placement of the Q-zip may have changed: the reverse plan judges them with the numbers of faces the Q-zip
+judged them by (`Surgery_plan::expected_faces`). A Q-zip has no reverse Q-zip (see
+`Reverse_qzip_status`) when it cancelled singularities (a Q-zip never creates any), or in the rare
+clean-ups that cannot be undone first; `done.reverse_status` says which. Like every execution the
 reverse is transactional: if it cannot be completed the mesh is restored.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`

@@ -79,6 +79,10 @@ struct Surgery_plan
   /// reverse plans only, empty otherwise: the vertices of `path` that do not exist before the
   /// execution (the Q-zip that the plan reverses merged them away), by increasing `index`
   std::vector<Created_vertex> created_vertices;
+  /// reverse plans only, empty otherwise: the number of faces that border vertices should have, as the
+  /// Q-zip that the plan reverses judged them (from the geometry before it); the execution judges their
+  /// defects with these numbers, whatever the rough placement of that Q-zip did to the border angles
+  std::vector<std::pair<vertex_descriptor, int> > expected_faces;
 
   /// `true` when `status` is `REALIZABLE`.
   bool is_realizable() const { return status == Plan_status::REALIZABLE; }
@@ -212,8 +216,9 @@ bool leaves_valence_6_without_cleanup(typename boost::graph_traits<PolygonMesh>:
 
 plans a Q-zip along `sketch`, a simple edge path from the initial singularity `sketch.front()` (an
 interior vertex of valence 3 or 5) to the terminal singularity `sketch.back()` (the same, or a border
-vertex with one quad too many on a straight piece of border, whose defect then moves by one border
-edge, or with one quad too few, reached along the border), with `initial_operation` as the compass at
+vertex with one quad too many on a straight piece of border or at a corner, whose defect then moves by
+one border edge, or with one quad too few on a straight piece of border, reached along the border, or at
+a concave corner; see the user manual, "Border End Points"), with `initial_operation` as the compass at
 the initial singularity (one of the four motions of the pair). When `sketch.front()` is such a border
 vertex and `sketch.back()` an interior one, the plan is that of the reversed sketch: the chain starts at
 the interior singularity (`plan.source == sketch.back()`), and `initial_operation` is the compass there.
@@ -299,8 +304,9 @@ plan_qzip(const PolygonMesh& pm,
   };
   const bool border_target = internal::is_border_vertex(plan.target, pm);
   const std::pair<int, int> target_defect = border_target ? defect_and_expected_faces(plan.target) : std::make_pair(0, 0);
-  const bool quad_too_few = target_defect == std::make_pair(-1, 2);
-  const bool target_supported = border_target ? (target_defect == std::make_pair(1, 2) || quad_too_few)
+  const bool quad_too_few = target_defect.first == -1;
+  const bool target_supported = border_target ? internal::Endpoint_preparation<PolygonMesh>::is_supported_border_end(
+                                                  target_defect.first, target_defect.second)
                                               : (plan.target_valence == 3 || plan.target_valence == 5);
   if(!target_supported) { plan.status = Plan_status::UNSUPPORTED_ENDPOINT; return plan; }
 
@@ -324,7 +330,7 @@ plan_qzip(const PolygonMesh& pm,
     internal::transport_compass(plan.path, plan.operations, (std::min)(retransport_from, first_fold + 1), pm);
   const Strip_operation start_tag = plan.operations[0];
   if(st == Plan_status::REALIZABLE)
-    st = border_target ? prep.prepare_border_end(plan.path, plan.operations, quad_too_few)
+    st = border_target ? prep.prepare_border_end(plan.path, plan.operations, quad_too_few, target_defect.second)
                        : prep.prepare_end(plan.path, plan.operations, initial_operation, transport);
   if(st == Plan_status::REALIZABLE && plan.path[0] == plan.source && plan.operations[0] != start_tag &&
      is_split(plan.operations[0]))
@@ -333,7 +339,7 @@ plan_qzip(const PolygonMesh& pm,
   if(st == Plan_status::REALIZABLE && border_target && !quad_too_few)
   {
     const std::pair<int, int> e = defect_and_expected_faces(plan.path.back()); // regular, or one quad short: cancels
-    if(e.second != 2 || (e.first != 0 && e.first != -1)) st = Plan_status::ENDPOINT_ADJUSTMENT;
+    if(e.first != 0 && e.first != -1) st = Plan_status::ENDPOINT_ADJUSTMENT;
   }
   if(st == Plan_status::REALIZABLE && !internal::is_simple_edge_path(plan.path, pm))
     st = Plan_status::NOT_SIMPLE_AFTER_ADJUSTMENT;

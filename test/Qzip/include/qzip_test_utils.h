@@ -12,6 +12,8 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <CGAL/Qzip/singularities.h>
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -329,6 +331,92 @@ path_along_border(const Mesh& m, typename boost::graph_traits<Mesh>::vertex_desc
     return {};
   return path;
 }
+
+/// The invariants of a Q-zip, measured on the whole mesh before it and checked after it, independently
+/// of the executor's own checks: a valid mesh, the same Euler characteristic, quads still quads (faces
+/// change by splits - collapses), and no new singularity: the singularity codes after (an interior
+/// vertex: its valence, none if 4; a border vertex: 100 + its defect, none if 0) form a sub-multiset of
+/// those before. Border defects are judged against the number of faces each border vertex should have
+/// from the geometry before (the chain places its vertices roughly); a vertex new on the border takes
+/// the number of the border vertex of before nearest to it.
+template <typename Mesh>
+class Qzip_invariants
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  long chi;
+  std::size_t faces = 0, quads = 0;
+  std::map<vertex_descriptor, int> expected_by_vertex;
+  std::vector<std::pair<Point, int> > expected_by_position;
+  std::vector<int> codes;
+
+  static int faces_around(vertex_descriptor v, const Mesh& m)
+  {
+    int n = 0;
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) if(!is_border(h, m)) ++n;
+    return n;
+  }
+  static std::size_t number_of_quads(const Mesh& m)
+  {
+    std::size_t n = 0;
+    for(auto f : CGAL::faces(m)) if(CGAL::halfedges_around_face(halfedge(f, m), m).size() == 4) ++n;
+    return n;
+  }
+  int expected_faces(vertex_descriptor v, const Mesh& m) const
+  {
+    const auto it = expected_by_vertex.find(v);
+    if(it != expected_by_vertex.end()) return it->second;
+    const Point& p = get(CGAL::vertex_point, m, v);
+    const auto nearest = std::min_element(expected_by_position.begin(), expected_by_position.end(),
+                                          [&p](const auto& a, const auto& b)
+                                          { return CGAL::squared_distance(a.first, p) < CGAL::squared_distance(b.first, p); });
+    return nearest->second;
+  }
+
+public:
+  explicit Qzip_invariants(const Mesh& m)
+    : chi(euler_characteristic(m)), faces(CGAL::faces(m).size()), quads(number_of_quads(m))
+  {
+    for(vertex_descriptor v : vertices(m))
+      if(on_border(v, m))
+      {
+        expected_by_vertex[v] = faces_around(v, m) - CGAL::Qzip::vertex_defect(v, m);
+        expected_by_position.emplace_back(get(CGAL::vertex_point, m, v), expected_by_vertex[v]);
+      }
+    codes = singularity_codes(m);
+  }
+
+  /// the singularity code of `v`: 0 if regular, its valence inside, 100 + its defect on the border,
+  /// judged against the face counts of before
+  int singularity_code(vertex_descriptor v, const Mesh& m) const
+  {
+    if(!on_border(v, m)) return valence(v, m) == 4 ? 0 : valence(v, m);
+    const int d = faces_around(v, m) - expected_faces(v, m);
+    return d == 0 ? 0 : 100 + d;
+  }
+
+  /// the sorted singularity codes of `m`
+  std::vector<int> singularity_codes(const Mesh& m) const
+  {
+    std::vector<int> out;
+    for(vertex_descriptor v : vertices(m)) if(const int c = singularity_code(v, m)) out.push_back(c);
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  /// asserts the invariants after a done Q-zip with `splits` splits and `collapses` collapses; returns
+  /// whether singularities were cancelled
+  bool check_after(const Mesh& m, std::size_t splits, std::size_t collapses) const
+  {
+    assert(CGAL::is_valid_polygon_mesh(m));
+    assert(euler_characteristic(m) == chi);
+    const std::size_t faces_after = CGAL::faces(m).size();
+    assert(faces_after - faces == number_of_quads(m) - quads);
+    assert(long(faces_after) - long(faces) == long(splits) - long(collapses));
+    const std::vector<int> after = singularity_codes(m);
+    assert(std::includes(codes.begin(), codes.end(), after.begin(), after.end()));
+    return after != codes;
+  }
+};
 
 } // namespace qzip_test
 

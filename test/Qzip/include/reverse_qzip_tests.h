@@ -1,5 +1,6 @@
 // Tests of the reverse Q-zip (paper, Sec. 2.8): `Qzip::reverse_qzip()` undoes a Q-zip up to isomorphism,
 // and the reverse of the reverse redoes it; Q-zips without a reverse are refused for the documented reasons.
+// (Q-zips that move a border defect: qzip_border_end_tests.h.)
 #ifndef QZIP_REVERSE_QZIP_TESTS_H
 #define QZIP_REVERSE_QZIP_TESTS_H
 
@@ -18,9 +19,6 @@
 #include <map>
 #include <string>
 #include <vector>
-
-// defined in test_qzip.cpp (before main())
-template <typename Mesh> void make_grid_with_border_steps(Mesh& m, unsigned seed);
 
 namespace qzip_test {
 
@@ -47,8 +45,7 @@ struct Reverse_counters
               << with_created << " re-creating merged path vertices), " << redone
               << " redone by the reverse of the reverse (" << redo_refused << " redos refused); no reverse: "
               << count(S::SINGULARITIES_CANCELLED) << " cancelled singularities, " << count(S::CLEANED_UP)
-              << " clean-up not undoable, " << count(S::BORDER_DEFECT_MOVED) << " moved a border defect, "
-              << count(S::GUIDE_NOT_RESTORABLE) << " without a guide" << std::endl;
+              << " clean-up not undoable, " << count(S::GUIDE_NOT_RESTORABLE) << " without a guide" << std::endl;
   }
 };
 
@@ -248,51 +245,6 @@ std::vector<std::pair<Point, Point> > interior_to_border_defect_pairs(const Mesh
   return pairs;
 }
 
-/// Q-zips to border targets (a border vertex with one quad too many, see `border_endpoint_qzips()` in
-/// test_qzip.cpp): each is reversed exactly or refused up front, because it cancelled a defect or moved
-/// it along the border. Returns the counters; every Q-zip is undone by a history.
-template <typename Mesh>
-Reverse_counters reverse_border_qzips(Mesh& m, std::size_t max_length)
-{
-  namespace Q = CGAL::Qzip;
-  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-  Reverse_counters c;
-  Mesh original;
-  copy_mesh(m, original);
-  const std::vector<std::pair<Point, Point> > pairs = interior_to_border_defect_pairs(m, max_length);
-  for(const auto& pair : pairs)
-    for(int motion = 0; motion < 4; ++motion)
-    {
-      const std::map<Point, vertex_descriptor> at = vertices_by_position(m);
-      const auto sketch = Q::shortest_surgery_path(m, at.at(pair.first), at.at(pair.second));
-      const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion));
-      if(!plan.is_realizable()) continue;
-      Q::Qzip_history<Mesh> history(m);
-      const auto r = Q::execute_qzip(m, plan, history);
-      if(!r.is_done()) continue;
-      ++c.forward_done;
-      ++c.by_status[r.reverse_status];
-      if(r.reverse_status == Q::Reverse_qzip_status::AVAILABLE)
-      {
-        assert(!on_border(plan.path.back(), m));
-        Q::Qzip_history<Mesh> back_history(m);
-        const auto back = Q::execute_qzip(m, r.reverse_plan, back_history);
-        assert(back.is_done() && are_isomorphic(m, original));
-        ++c.reversed;
-        back_history.undo_all();
-      }
-      else
-      {
-        assert(r.reverse_status == Q::Reverse_qzip_status::SINGULARITIES_CANCELLED ||
-               r.reverse_status == Q::Reverse_qzip_status::BORDER_DEFECT_MOVED);
-        assert(!Q::reverse_qzip(m, r).is_done());
-      }
-      history.undo_all();
-      assert(are_isomorphic(m, original));
-    }
-  return c;
-}
-
 /// the reverse Q-zip on planted grids and real meshes, Surface_mesh and Polyhedron_3; `per_mesh` bounds
 /// the number of Q-zips per mesh.
 inline void test_reverse_qzip(std::size_t per_mesh)
@@ -321,31 +273,6 @@ inline void test_reverse_qzip(std::size_t per_mesh)
   assert(grids_sm.redone > 0 && real_sm.redone > 0);
   // clean-ups undone first and merged path vertices re-created, on both mesh types
   assert(real_sm.with_prelude > 0 && real_ph.with_prelude > 0 && real_sm.with_created > 0 && real_ph.with_created > 0);
-
-  Reverse_counters border_sm, border_ph;
-  for(unsigned seed = 1; seed <= 2; ++seed)
-  {
-    Surface_mesh sm;
-    make_grid_with_border_steps(sm, seed);
-    border_sm.add(reverse_border_qzips(sm, 14));
-    Polyhedron ph;
-    make_grid_with_border_steps(ph, seed);
-    border_ph.add(reverse_border_qzips(ph, 14));
-  }
-  border_sm.print("reverse Q-zips to border targets, planted grids, Surface_mesh");
-  border_ph.print("reverse Q-zips to border targets, planted grids, Polyhedron_3");
-  assert(border_sm.count(CGAL::Qzip::Reverse_qzip_status::BORDER_DEFECT_MOVED) > 0);
-  assert(border_sm.forward_done == border_ph.forward_done);
-  Reverse_counters border_real;
-  for(const char* f : { "data/polylap_suzanne_half.obj", "data/trimesh_target.obj" })
-  {
-    Surface_mesh m;
-    const bool ok = read_mesh(f, m);
-    assert(ok);
-    border_real.add(reverse_border_qzips(m, 10));
-  }
-  border_real.print("reverse Q-zips to border targets, bundled meshes with borders, Surface_mesh");
-  assert(border_real.forward_done > 0);
 }
 
 } // namespace qzip_test

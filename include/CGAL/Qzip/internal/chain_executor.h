@@ -108,6 +108,7 @@ public:
     Qzip_result<PolygonMesh> r;
     r.status = plan.status;
     if(!plan.is_realizable()) return r;
+    for(const auto& vf : plan.expected_faces) ideal[vf.first] = vf.second; // a reverse plan's frozen numbers
     // the ends of a reverse plan may be created by the execution (Surgery_plan::created_vertices)
     const bool ends_exist = plan.source != GT::null_vertex() && plan.target != GT::null_vertex();
     const Point source_at = ends_exist ? get(log_vpm(), plan.source) : Point();
@@ -146,6 +147,16 @@ public:
 
   // after a done run: whether the surgery cancelled singularities (interior valences or border defects)
   bool cancelled_singularities() const { return cancelled; }
+
+  // after a done run: the number of faces that the live vertices judged as border (or feature) vertices
+  // should have, frozen from the geometry before the surgery (see Surgery_plan::expected_faces)
+  std::vector<std::pair<vertex_descriptor, int> > expected_faces_of_live_vertices() const
+  {
+    std::vector<std::pair<vertex_descriptor, int> > out;
+    for(vertex_descriptor v : live_vertices_in_order())
+      if(const auto it = ideal.find(v); it != ideal.end()) out.emplace_back(v, it->second);
+    return out;
+  }
 
 private:
   VertexPointMap log_vpm() const { return log.vertex_point_map(); }

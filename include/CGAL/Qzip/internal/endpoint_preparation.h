@@ -105,6 +105,15 @@ public:
     }
   }
 
+  // The border ends supported: a border vertex with one quad too many or too few, on a straight piece of
+  // border (two quads expected) or at a concave corner (three quads expected), or with one quad too many
+  // at a convex corner (one quad expected; it cannot have one too few).
+  static bool is_supported_border_end(int defect, int expected_faces)
+  {
+    return (defect == 1 && expected_faces >= 1 && expected_faces <= 3) ||
+           (defect == -1 && (expected_faces == 2 || expected_faces == 3));
+  }
+
   // A border end t with one quad too many (defect +1; a border end with one quad too few cannot be
   // reached through interior vertices). The chain goes on by one border edge t->e and t becomes a
   // split vertex, which hands the defect to e. After LS or RC (the tags that count quads on the left),
@@ -123,15 +132,30 @@ public:
   // the path ends there, as at an interior v3 (E1), after the split that inserts its strip on the side
   // of the border (RS with the mesh on the left of u->t, LS with it on the right). Found by enumeration
   // too: after the two collapses the chain often fails, after the other split it mostly does.
-  Plan_status prepare_border_end(Path& path, Operations& ops, bool quad_too_few) const
+  //
+  // At a concave corner (`expected_faces` 3, found by the same enumeration on L-shaped grids): with one
+  // quad too many (four quads, valence 5), the collapses are handled as on a straight border, and after
+  // a split e is the border neighbour two steps from u on the side of the split (counterclockwise index
+  // 2 after LS, valence - 2 after RS), whichever side of it the gap lies, and t repeats the split; with one
+  // quad too few (two quads, valence 3), the path arrives from the interior neighbour after a collapse
+  // and ends at t (E1). Arrivals along the border at a concave corner are refused (not enumerated).
+  // At a convex corner with one quad too many (two quads, valence 3) the path arrives from the interior
+  // neighbour after a collapse, and the rule of a straight border applies; after a split nothing moved
+  // the defect, and along the border the straight rule worked for some arrivals only (the others roll
+  // back, for a reason we have not characterised): both are refused.
+  Plan_status prepare_border_end(Path& path, Operations& ops, bool quad_too_few, int expected_faces) const
   {
     const std::size_t n = path.size();
     const vertex_descriptor t = path[n - 1], u = path[n - 2];
     const Strip_operation last = ops[n - 2];
     if(last == Strip_operation::NO_OPERATION) return Plan_status::ENDPOINT_ADJUSTMENT;
     const halfedge_descriptor ut = out(u, t);
+    const bool concave = expected_faces == 3;
+    if(concave && is_border_edge(ut, pm)) return Plan_status::ENDPOINT_ADJUSTMENT;
+    if(expected_faces == 1 && (is_border_edge(ut, pm) || is_split(last))) return Plan_status::ENDPOINT_ADJUSTMENT;
     if(quad_too_few)
     {
+      if(concave) return is_collapse(last) ? Plan_status::REALIZABLE : Plan_status::ENDPOINT_ADJUSTMENT;
       if(!is_border_edge(ut, pm)) return Plan_status::ENDPOINT_ADJUSTMENT;
       const bool mesh_on_left = !is_border(ut, pm);
       return last == (mesh_on_left ? Strip_operation::RIGHT_SPLIT : Strip_operation::LEFT_SPLIT)
@@ -151,9 +175,12 @@ public:
     }
     const bool counts_left = last == Strip_operation::LEFT_SPLIT || last == Strip_operation::RIGHT_COLLAPSE;
     const int deg = int(valence(t, pm));
-    const int k = last == Strip_operation::RIGHT_COLLAPSE ? 1 : (last == Strip_operation::LEFT_COLLAPSE ? deg - 1 : 2);
+    const int k = last == Strip_operation::RIGHT_COLLAPSE ? 1
+                : last == Strip_operation::LEFT_COLLAPSE ? deg - 1
+                : (concave && last == Strip_operation::RIGHT_SPLIT ? deg - 2 : 2);
     const halfedge_descriptor te = rotate_outgoing(opposite(ut, pm), k, pm);
-    if(!is_border(counts_left ? te : opposite(te, pm), pm)) return Plan_status::ENDPOINT_ADJUSTMENT;
+    if(concave && is_split(last) ? !is_border_edge(te, pm) : !is_border(counts_left ? te : opposite(te, pm), pm))
+      return Plan_status::ENDPOINT_ADJUSTMENT;
     path.push_back(target(te, pm));
     ops[n - 1] = is_collapse(last) ? rotate(last, 2) : last;
     ops.push_back(Strip_operation::NO_OPERATION);

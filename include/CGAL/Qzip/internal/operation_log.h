@@ -102,8 +102,7 @@ public:
   }
 
   // splits target(h1) (see split_vertex_into_quad()) and moves both copies a third of the way towards
-  // the centroids of their own neighbours (of their border neighbours for a copy on the border, which
-  // keeps it on a straight border).
+  // the centroids of their own neighbours; a copy on the border stays where the split vertex was.
   halfedge_descriptor split(halfedge_descriptor h1, halfedge_descriptor h2)
   {
     Entry e;
@@ -152,13 +151,14 @@ private:
     put(vpm, vertex_ids[e.moved], e.moved_from);
   }
 
+  // a copy on the border takes the place of the split vertex exactly: moving it along the border would cut
+  // a corner off, and the border defects are judged from the corner angles
   void relax(vertex_descriptor v, const Point& from)
   {
+    if(is_border_vertex(v, pm)) { put(vpm, v, from); return; }
     double x = 0, y = 0, z = 0, n = 0;
-    const bool on_border = is_border_vertex(v, pm);
     for(auto h : halfedges_around_target(halfedge(v, pm), pm))
     {
-      if(on_border && !is_border_edge(h, pm)) continue;
       const Point& p = get(vpm, source(h, pm));
       x += p.x(); y += p.y(); z += p.z(); n += 1;
     }
