@@ -396,8 +396,9 @@ introducing two v5).
 Every operation is checked before it is applied (link condition, border, constrained edges and
 protected faces); afterwards the valences of every vertex the surgery touched are compared with the
 ones before: the irregular valences after must form a sub-multiset of those before (no singularity is
-created; a path passing other singularities may cancel complementary pairs of them) and no border
-vertex may change valence. If an operation cannot be applied or the check fails, everything done is rolled back and
+created; a path passing other singularities may cancel complementary pairs of them), border vertices are
+compared by their defect (the number of quads each should have is frozen before the chain), and no interior
+vertex may reach the border unless a border vertex was merged into it. If an operation cannot be applied or the check fails, everything done is rolled back and
 the mesh is combinatorially and geometrically as before (re-created elements may have new descriptors).
 
 \tparam PolygonMesh a model of `MutableFaceGraph`
