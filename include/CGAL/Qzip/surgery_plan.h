@@ -416,9 +416,10 @@ plan_qzip(const PolygonMesh& pm,
   {
     const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                       get_const_property_map(CGAL::vertex_point, pm));
-    internal::Chain_simulation<PolygonMesh, std::decay_t<decltype(vpm)>, std::decay_t<decltype(ecm)>,
-                               std::decay_t<decltype(fcm)> > simulation(pm, vpm, ecm, fcm);
-    const auto s = simulation.run(plan);
+    // the copy's buffers are kept from plan to plan
+    static thread_local internal::Chain_simulation<PolygonMesh, std::decay_t<decltype(vpm)>, std::decay_t<decltype(ecm)>,
+                                                   std::decay_t<decltype(fcm)> > simulation;
+    const auto s = simulation.run(pm, plan, vpm, ecm, fcm);
     if(s.failure != Execution_failure::NONE)
     {
       plan.status = Plan_status::EXECUTION_WOULD_FAIL;

@@ -16,6 +16,7 @@
 #include <CGAL/Qzip/Named_function_parameters.h>
 #include <CGAL/Qzip/Qzip_visitor_base.h>
 #include <CGAL/Qzip/internal/operation_log.h>
+#include <CGAL/Qzip/internal/descriptor_hash_map.h>
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -27,8 +28,6 @@
 
 #include <functional>
 #include <type_traits>
-#include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -82,17 +81,21 @@ struct Simulated_execution
 // the operations it applies or attempts and of their neighbours (link condition, clean-up candidates,
 // valence-6 split delimiters, singularity check); a watcher (the executor's visitor) checks that every
 // vertex of an applied operation and each of its neighbours is complete, and the copy is made again with
-// twice the radius when one is not (the chain merged vertices from farther away towards the path). The
-// default radius, 3, leaves a margin of one ring over what the chain and its clean-up reach in every
-// test case (test_qzip forces every plan refused by the simulation through the executor: it fails; and no
-// plan accepted by the simulation is rolled back).
+// twice the radius when one is not (the chain merged vertices from farther away towards the path); past
+// `maximal_radius` the simulation gives up and leaves the plan to the executor. The first radius, 3,
+// leaves a margin of one ring over what the chain and its clean-up reach in the tests (test_qzip forces
+// every plan refused by the simulation through the executor, where it fails, and no plan accepted by the
+// simulation is rolled back; with a radius of 1 and no watcher, some forced plans succeed).
+//
+// The copy is built halfedge by halfedge, mirroring the input (the same first incoming halfedge at each
+// complete vertex, so that the executor's clean-up makes the same choices on the copy); an object is meant
+// to be reused from plan to plan: its buffers stay allocated.
 template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap, typename FaceIsConstrainedMap>
 class Chain_simulation
 {
   typedef boost::graph_traits<PolygonMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef typename GT::edge_descriptor edge_descriptor;
   typedef typename GT::face_descriptor face_descriptor;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
 
@@ -105,25 +108,22 @@ class Chain_simulation
   typedef Local_constraint_map<EdgeIsConstrainedMap, Local_edge, Local_mesh> Local_ecm;
   typedef Local_constraint_map<FaceIsConstrainedMap, Local_face, Local_mesh> Local_fcm;
 
-  static constexpr int default_radius = 3;
+  static constexpr int first_radius = 3;
   static constexpr int maximal_radius = 24;
 
-  const PolygonMesh& pm;
-  VertexPointMap vpm;
-  EdgeIsConstrainedMap ecm;
-  FaceIsConstrainedMap fcm;
-
-  // the copy, made again for every radius
+  // the copy, made again for every plan and radius
   Local_mesh local;
   typename Local_ecm::type ecm_local;
   typename Local_fcm::type fcm_local;
-  std::unordered_map<vertex_descriptor, Local_vertex, boost::hash<vertex_descriptor> > to_local;
-  std::unordered_map<vertex_descriptor, int, boost::hash<vertex_descriptor> > depth; // distance to the path, up to radius
-  std::unordered_set<face_descriptor, boost::hash<face_descriptor> > copied_faces;
-  std::vector<vertex_descriptor> inner;  // the vertices up to `radius` edges from the path, by distance
+  Descriptor_hash_map<vertex_descriptor, int> depth;                 // distance to the path, up to the radius
+  Descriptor_hash_map<vertex_descriptor, Local_vertex> vertex_copy;
+  Descriptor_hash_map<halfedge_descriptor, Local_halfedge> halfedge_copy;
+  Descriptor_hash_map<face_descriptor, Local_face> face_copy;
+  std::vector<vertex_descriptor> inner;      // the vertices up to the radius from the path, by distance
   std::vector<face_descriptor> faces_to_copy;
-  std::vector<bool> complete;            // by local vertex index; later vertices are made by splits of complete ones
-  std::vector<Local_vertex> corners;
+  std::vector<halfedge_descriptor> outside;  // copied halfedges whose face is not copied (border of the copy)
+  std::vector<bool> complete;                // by local vertex index (later vertices are made by splits)
+  Surgery_plan<Local_mesh> local_plan;
 
   // Checks, before each operation the executor applies to the copy, that its vertices and their
   // neighbours are complete (see above).
@@ -151,69 +151,104 @@ class Chain_simulation
     }
   };
 
-  // copies the faces incident to the vertices at most `radius` edges from `path`; false when the copy
-  // cannot be made (a face the local mesh refuses)
-  bool copy_neighbourhood(const std::vector<vertex_descriptor>& path, int radius)
+  Local_vertex copy_of(vertex_descriptor v, const PolygonMesh& pm, const VertexPointMap& vpm)
+  {
+    const auto ins = vertex_copy.insert(v, Local_vertex());
+    if(ins.second) *ins.first = local.add_vertex(get(vpm, v));
+    return *ins.first;
+  }
+
+  // the copy of `h` (and of its opposite), made on first use
+  Local_halfedge copy_of(halfedge_descriptor h, const PolygonMesh& pm)
+  {
+    const auto ins = halfedge_copy.insert(h, Local_halfedge());
+    if(ins.second)
+    {
+      *ins.first = local.add_edge();
+      halfedge_copy.insert(opposite(h, pm), local.opposite(*ins.first));
+      outside.push_back(opposite(h, pm)); // until its face is copied
+    }
+    return *ins.first;
+  }
+
+  bool is_copied(face_descriptor f) const { return f != GT::null_face() && face_copy.find(f) != nullptr; }
+
+  // copies the faces incident to the vertices at most `radius` edges from `path`
+  void copy_neighbourhood(const std::vector<vertex_descriptor>& path, int radius, const PolygonMesh& pm,
+                          const VertexPointMap& vpm, const EdgeIsConstrainedMap& ecm, const FaceIsConstrainedMap& fcm)
   {
     local.clear_without_removing_property_maps();
-    to_local.clear(); depth.clear(); copied_faces.clear(); inner.clear(); faces_to_copy.clear();
+    depth.clear(); vertex_copy.clear(); halfedge_copy.clear(); face_copy.clear();
+    inner.clear(); faces_to_copy.clear(); outside.clear();
     for(vertex_descriptor v : path)
-      if(depth.emplace(v, 0).second) inner.push_back(v);
+      if(depth.insert(v, 0).second) inner.push_back(v);
     for(std::size_t i = 0; i < inner.size(); ++i)
     {
       const vertex_descriptor v = inner[i];
-      const int d = depth[v];
+      const int d = *depth.find(v);
       for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
       {
-        if(d < radius && depth.emplace(source(h, pm), d + 1).second) inner.push_back(source(h, pm));
-        if(!is_border(h, pm) && copied_faces.insert(face(h, pm)).second) faces_to_copy.push_back(face(h, pm));
+        if(d < radius && depth.insert(source(h, pm), d + 1).second) inner.push_back(source(h, pm));
+        if(!is_border(h, pm) && face_copy.insert(face(h, pm), Local_face()).second) faces_to_copy.push_back(face(h, pm));
       }
     }
-    local.reserve(4 * faces_to_copy.size(), 4 * faces_to_copy.size(), faces_to_copy.size());
+    local.reserve(2 * faces_to_copy.size(), 3 * faces_to_copy.size(), faces_to_copy.size());
     for(face_descriptor f : faces_to_copy)
     {
-      corners.clear();
-      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pm), pm))
-      {
-        const auto ins = to_local.emplace(target(h, pm), Local_vertex());
-        if(ins.second) ins.first->second = local.add_vertex(get(vpm, target(h, pm)));
-        corners.push_back(ins.first->second);
-      }
-      const Local_face lf = local.add_face(corners);
-      if(lf == Local_mesh::null_face()) return false;
+      const Local_face lf = local.add_face();
+      *face_copy.insert(f, lf).first = lf;
       if constexpr(Local_fcm::copied) if(get(fcm, f)) put(fcm_local, lf, true);
-      if constexpr(Local_ecm::copied)
-        for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pm), pm))
-          if(get(ecm, edge(h, pm))) put(ecm_local, edge(local_halfedge(h), local), true);
+      const halfedge_descriptor first = halfedge(f, pm);
+      local.set_halfedge(lf, copy_of(first, pm));
+      halfedge_descriptor h = first;
+      do
+      {
+        const Local_halfedge lh = copy_of(h, pm);
+        const Local_vertex lv = copy_of(target(h, pm), pm, vpm);
+        local.set_target(lh, lv);
+        local.set_halfedge(lv, lh); // replaced by a border halfedge, or the input's, below
+        local.set_face(lh, lf);
+        local.set_next(lh, copy_of(next(h, pm), pm));
+        if constexpr(Local_ecm::copied) if(get(ecm, edge(h, pm))) put(ecm_local, local.edge(lh), true);
+        h = next(h, pm);
+      }
+      while(h != first);
+    }
+    // the border of the copy: the real border, and the cut. Its cycles turn around each vertex through
+    // the faces that are not copied, to the next copied edge.
+    for(halfedge_descriptor g : outside)
+    {
+      if(is_copied(face(g, pm))) continue;
+      const Local_halfedge lg = *halfedge_copy.find(g);
+      const Local_vertex lv = *vertex_copy.find(target(g, pm));
+      local.set_target(lg, lv);
+      local.set_face(lg, Local_mesh::null_face());
+      halfedge_descriptor x = next(g, pm);
+      while(halfedge_copy.find(x) == nullptr) x = next(opposite(x, pm), pm);
+      local.set_next(lg, *halfedge_copy.find(x));
+      local.set_halfedge(lv, lg);
     }
     complete.assign(local.number_of_vertices(), false);
     for(vertex_descriptor v : inner)
     {
-      const Local_vertex lv = to_local.at(v);
+      const Local_vertex lv = *vertex_copy.find(v);
       complete[std::size_t(lv)] = true;
-      // the same first incoming halfedge as in the input: the executor's clean-up turns around a vertex
-      // from there, and so makes the same choices on the copy
-      local.set_halfedge(lv, local_halfedge(halfedge(v, pm)));
+      local.set_halfedge(lv, *halfedge_copy.find(halfedge(v, pm)));
     }
-    return true;
   }
 
-  Local_halfedge local_halfedge(halfedge_descriptor h) const
-  {
-    return halfedge(to_local.at(source(h, pm)), to_local.at(target(h, pm)), local).first;
-  }
-
+  // runs the executor on the copy; `reached_cut` tells whether the watcher saw an incomplete vertex
   Simulated_execution run_on_copy(const Surgery_plan<PolygonMesh>& plan, bool& reached_cut)
   {
-    Surgery_plan<Local_mesh> copy;
-    copy.source = to_local.at(plan.source);
-    copy.target = to_local.at(plan.target);
-    copy.source_valence = plan.source_valence;
-    copy.target_valence = plan.target_valence;
-    copy.initial_operation = plan.initial_operation;
-    copy.operations = plan.operations;
-    copy.status = Plan_status::REALIZABLE;
-    for(vertex_descriptor v : plan.path) copy.path.push_back(to_local.at(v));
+    local_plan.source = *vertex_copy.find(plan.source);
+    local_plan.target = *vertex_copy.find(plan.target);
+    local_plan.source_valence = plan.source_valence;
+    local_plan.target_valence = plan.target_valence;
+    local_plan.initial_operation = plan.initial_operation;
+    local_plan.operations = plan.operations;
+    local_plan.status = Plan_status::REALIZABLE;
+    local_plan.path.clear();
+    for(vertex_descriptor v : plan.path) local_plan.path.push_back(*vertex_copy.find(v));
 
     Local_point_map points = local.points();
     Operation_log<Local_mesh, Local_point_map> log(local, points);
@@ -221,7 +256,7 @@ class Chain_simulation
     const auto np = Qzip::parameters::face_is_constrained_map(fcm_local,
                       CGAL::parameters::vertex_point_map(points).edge_is_constrained_map(ecm_local).visitor(std::ref(watcher)));
     Chain_executor<Local_mesh, Local_point_map, std::decay_t<decltype(np)> > executor(local, log, np);
-    const Qzip_result<Local_mesh> r = executor.run(copy);
+    const Qzip_result<Local_mesh> r = executor.run(local_plan);
     reached_cut = watcher.reached_cut;
     Simulated_execution s;
     s.failure = r.failure;
@@ -230,18 +265,18 @@ class Chain_simulation
   }
 
 public:
-  Chain_simulation(const PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm)
-    : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm),
-      ecm_local(Local_ecm::make(local, "e:qzip_constrained")), fcm_local(Local_fcm::make(local, "f:qzip_constrained"))
+  Chain_simulation()
+    : ecm_local(Local_ecm::make(local, "e:qzip_constrained")), fcm_local(Local_fcm::make(local, "f:qzip_constrained"))
   {}
 
-  // what the execution of `plan` (a forward plan: no prelude, no created vertex) would do
-  Simulated_execution run(const Surgery_plan<PolygonMesh>& plan)
+  // what the execution of `plan` (a forward plan: no prelude, no created vertex) on `pm` would do
+  Simulated_execution run(const PolygonMesh& pm, const Surgery_plan<PolygonMesh>& plan, const VertexPointMap& vpm,
+                          const EdgeIsConstrainedMap& ecm, const FaceIsConstrainedMap& fcm)
   {
     CGAL_precondition(plan.prelude.empty() && plan.created_vertices.empty());
-    for(int radius = default_radius; radius <= maximal_radius; radius *= 2)
+    for(int radius = first_radius; radius <= maximal_radius; radius *= 2)
     {
-      if(!copy_neighbourhood(plan.path, radius)) break;
+      copy_neighbourhood(plan.path, radius, pm, vpm, ecm, fcm);
       bool reached_cut = false;
       const Simulated_execution s = run_on_copy(plan, reached_cut);
       if(!reached_cut) return s;
