@@ -236,6 +236,11 @@ bool check_predicted_failure(Counters& c, Mesh& m, Q::Surgery_plan<Mesh> plan, H
     return false;
   const Q::Plan_status status = plan.status;
   assert((status == Q::Plan_status::EXECUTION_WOULD_FAIL) == (plan.predicted_failure != Q::Execution_failure::NONE));
+  if(status == Q::Plan_status::EXECUTION_WOULD_FAIL) // without the simulation, the same plan passes
+  {
+    const auto unsimulated = Q::plan_qzip(m, plan.sketch, plan.initial_operation, Q::parameters::simulate_chain(false));
+    assert(unsimulated.is_realizable() && unsimulated.path == plan.path && unsimulated.operations == plan.operations);
+  }
   Mesh before;
   copy_mesh(m, before);
   plan.status = Q::Plan_status::REALIZABLE;
@@ -843,6 +848,8 @@ struct Border_path_counters
     for(const auto& kv : failures) std::cout << kv.second << ": " << Q::describe(kv.first) << "; ";
     std::cout << "); refused:";
     for(const auto& kv : refused) std::cout << " " << kv.second << " (" << Q::describe(kv.first) << ")";
+    std::cout << "; " << c.predicted_failures << " refused by a local check and " << c.simulated_failures
+              << " by the simulation, each failing when forced";
     std::cout << "; " << reversed << " undone by their reverse Q-zip (isomorphic), "
               << no_reverse_count(Q::Reverse_qzip_status::SINGULARITIES_CANCELLED) << " without a reverse (cancelled singularities)"
               << std::endl;

@@ -60,13 +60,11 @@ struct Local_constraint_map<Static_boolean_property_map<InputKey, false>, LocalK
 };
 
 // The result of a simulated execution: the failure the execution of the plan would meet (`NONE` when
-// it would succeed) and the path position where it would; `decided` is false when the neighbourhood
-// could not be copied (the plan is then left to the executor).
+// it would succeed) and the path position where it would.
 struct Simulated_execution
 {
   Execution_failure failure = Execution_failure::NONE;
   std::size_t failed_step = 0;
-  bool decided = true;
 };
 
 // Runs the executor (Chain_executor: the chain, the valence-2/6 clean-up and the singularity check) on a
@@ -82,14 +80,18 @@ struct Simulated_execution
 // valence-6 split delimiters, singularity check); a watcher (the executor's visitor) checks that every
 // vertex of an applied operation and each of its neighbours is complete, and the copy is made again with
 // twice the radius when one is not (the chain merged vertices from farther away towards the path); past
-// `maximal_radius` the simulation gives up and leaves the plan to the executor. The first radius, 3,
-// leaves a margin of one ring over what the chain and its clean-up reach in the tests (test_qzip forces
-// every plan refused by the simulation through the executor, where it fails, and no plan accepted by the
-// simulation is rolled back; with a radius of 1 and no watcher, some forced plans succeed).
+// `maximal_radius` the simulation gives up and leaves the plan to the executor. The watcher does not see
+// the operation whose check fails (the executor tells no visitor of it): the first radius, 3, leaves a
+// margin of one ring over what the chain and its clean-up reach in the tests, where the watcher never
+// asks for a second copy (with a radius of 2, it does for 2.5% of the plans on real meshes, and with a
+// radius of 1 and no watcher some plans refused by the simulation succeed when forced). test_qzip
+// forces every plan refused by the simulation through the executor, where it fails at the same step for
+// the same reason, and no plan accepted by the simulation is rolled back.
 //
-// The copy is built halfedge by halfedge, mirroring the input (the same first incoming halfedge at each
-// complete vertex, so that the executor's clean-up makes the same choices on the copy); an object is meant
-// to be reused from plan to plan: its buffers stay allocated.
+// The copy is a Surface_mesh built array by array (no face insertion), mirroring the input: the same
+// first incoming halfedge at each complete vertex, so that the executor's clean-up, which turns around a
+// vertex from there, makes the same choices on the copy. An object is meant to be reused from plan to
+// plan: its buffers (hash maps included, see Descriptor_hash_map) stay allocated.
 template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap, typename FaceIsConstrainedMap>
 class Chain_simulation
 {
@@ -120,8 +122,12 @@ class Chain_simulation
   Descriptor_hash_map<halfedge_descriptor, Local_halfedge> halfedge_copy;
   Descriptor_hash_map<face_descriptor, Local_face> face_copy;
   std::vector<vertex_descriptor> inner;      // the vertices up to the radius from the path, by distance
-  std::vector<face_descriptor> faces_to_copy;
-  std::vector<halfedge_descriptor> outside;  // copied halfedges whose face is not copied (border of the copy)
+  std::vector<face_descriptor> faces_to_copy;     // local face k is faces_to_copy[k]
+  std::vector<vertex_descriptor> vertices_to_copy; // local vertex i is vertices_to_copy[i]
+  std::vector<std::pair<Local_halfedge, Local_vertex> > corners; // the halfedges of the copied faces, and their targets
+  std::vector<std::size_t> face_begin;             // face k's corners start at face_begin[k]
+  std::vector<Local_edge> constrained_edges;
+  std::vector<halfedge_descriptor> outside;  // copied halfedges whose face may not be copied (border of the copy)
   std::vector<bool> complete;                // by local vertex index (later vertices are made by splits)
   Surgery_plan<Local_mesh> local_plan;
 
@@ -151,26 +157,6 @@ class Chain_simulation
     }
   };
 
-  Local_vertex copy_of(vertex_descriptor v, const PolygonMesh& pm, const VertexPointMap& vpm)
-  {
-    const auto ins = vertex_copy.insert(v, Local_vertex());
-    if(ins.second) *ins.first = local.add_vertex(get(vpm, v));
-    return *ins.first;
-  }
-
-  // the copy of `h` (and of its opposite), made on first use
-  Local_halfedge copy_of(halfedge_descriptor h, const PolygonMesh& pm)
-  {
-    const auto ins = halfedge_copy.insert(h, Local_halfedge());
-    if(ins.second)
-    {
-      *ins.first = local.add_edge();
-      halfedge_copy.insert(opposite(h, pm), local.opposite(*ins.first));
-      outside.push_back(opposite(h, pm)); // until its face is copied
-    }
-    return *ins.first;
-  }
-
   bool is_copied(face_descriptor f) const { return f != GT::null_face() && face_copy.find(f) != nullptr; }
 
   // copies the faces incident to the vertices at most `radius` edges from `path`
@@ -179,7 +165,8 @@ class Chain_simulation
   {
     local.clear_without_removing_property_maps();
     depth.clear(); vertex_copy.clear(); halfedge_copy.clear(); face_copy.clear();
-    inner.clear(); faces_to_copy.clear(); outside.clear();
+    inner.clear(); faces_to_copy.clear(); outside.clear(); vertices_to_copy.clear(); corners.clear();
+    face_begin.clear(); constrained_edges.clear();
     for(vertex_descriptor v : path)
       if(depth.insert(v, 0).second) inner.push_back(v);
     for(std::size_t i = 0; i < inner.size(); ++i)
@@ -189,31 +176,52 @@ class Chain_simulation
       for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
       {
         if(d < radius && depth.insert(source(h, pm), d + 1).second) inner.push_back(source(h, pm));
-        if(!is_border(h, pm) && face_copy.insert(face(h, pm), Local_face()).second) faces_to_copy.push_back(face(h, pm));
+        if(!is_border(h, pm) && face_copy.insert(face(h, pm), Local_face(faces_to_copy.size())).second)
+          faces_to_copy.push_back(face(h, pm));
       }
     }
-    local.reserve(2 * faces_to_copy.size(), 3 * faces_to_copy.size(), faces_to_copy.size());
+    // the local indices, in the order of Surface_mesh (the halfedges of edge e are 2e and 2e + 1)
+    std::size_t edges = 0;
     for(face_descriptor f : faces_to_copy)
     {
-      const Local_face lf = local.add_face();
-      *face_copy.insert(f, lf).first = lf;
-      if constexpr(Local_fcm::copied) if(get(fcm, f)) put(fcm_local, lf, true);
-      const halfedge_descriptor first = halfedge(f, pm);
-      local.set_halfedge(lf, copy_of(first, pm));
-      halfedge_descriptor h = first;
-      do
+      face_begin.push_back(corners.size());
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pm), pm))
       {
-        const Local_halfedge lh = copy_of(h, pm);
-        const Local_vertex lv = copy_of(target(h, pm), pm, vpm);
-        local.set_target(lh, lv);
-        local.set_halfedge(lv, lh); // replaced by a border halfedge, or the input's, below
-        local.set_face(lh, lf);
-        local.set_next(lh, copy_of(next(h, pm), pm));
-        if constexpr(Local_ecm::copied) if(get(ecm, edge(h, pm))) put(ecm_local, local.edge(lh), true);
-        h = next(h, pm);
+        Local_halfedge lh(2 * edges);
+        const auto hi = halfedge_copy.insert(h, lh);
+        if(hi.second)
+        {
+          halfedge_copy.insert(opposite(h, pm), Local_halfedge(2 * edges + 1));
+          outside.push_back(opposite(h, pm)); // until its face is copied
+          if constexpr(Local_ecm::copied) if(get(ecm, edge(h, pm))) constrained_edges.push_back(Local_edge(edges));
+          ++edges;
+        }
+        else lh = *hi.first;
+        const auto vi = vertex_copy.insert(target(h, pm), Local_vertex(vertices_to_copy.size()));
+        if(vi.second) vertices_to_copy.push_back(target(h, pm));
+        corners.emplace_back(lh, *vi.first);
       }
-      while(h != first);
     }
+    face_begin.push_back(corners.size());
+    local.resize(vertices_to_copy.size(), edges, faces_to_copy.size());
+    Local_point_map points = local.points();
+    for(std::size_t i = 0; i < vertices_to_copy.size(); ++i) put(points, Local_vertex(i), get(vpm, vertices_to_copy[i]));
+    for(std::size_t k = 0; k < faces_to_copy.size(); ++k)
+    {
+      const Local_face lf(k);
+      const std::size_t begin = face_begin[k], end = face_begin[k + 1];
+      local.set_halfedge(lf, corners[begin].first);
+      for(std::size_t j = begin; j < end; ++j)
+      {
+        const Local_halfedge lh = corners[j].first;
+        local.set_target(lh, corners[j].second);
+        local.set_halfedge(corners[j].second, lh); // replaced by a border halfedge, or the input's, below
+        local.set_face(lh, lf);
+        local.set_next(lh, corners[j + 1 == end ? begin : j + 1].first);
+      }
+      if constexpr(Local_fcm::copied) if(get(fcm, faces_to_copy[k])) put(fcm_local, lf, true);
+    }
+    for(Local_edge e : constrained_edges) put(ecm_local, e, true);
     // the border of the copy: the real border, and the cut. Its cycles turn around each vertex through
     // the faces that are not copied, to the next copied edge.
     for(halfedge_descriptor g : outside)
@@ -228,11 +236,13 @@ class Chain_simulation
       local.set_next(lg, *halfedge_copy.find(x));
       local.set_halfedge(lv, lg);
     }
-    complete.assign(local.number_of_vertices(), false);
+    complete.assign(vertices_to_copy.size(), false);
     for(vertex_descriptor v : inner)
     {
       const Local_vertex lv = *vertex_copy.find(v);
       complete[std::size_t(lv)] = true;
+      // the same first incoming halfedge as in the input: the executor's clean-up turns around a vertex
+      // from there, and so makes the same choices on the copy
       local.set_halfedge(lv, *halfedge_copy.find(halfedge(v, pm)));
     }
   }
@@ -281,9 +291,7 @@ public:
       const Simulated_execution s = run_on_copy(plan, reached_cut);
       if(!reached_cut) return s;
     }
-    Simulated_execution undecided;
-    undecided.decided = false;
-    return undecided;
+    return Simulated_execution(); // undecided: left to the executor, which rolls back if it fails
   }
 };
 

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -29,17 +30,25 @@ template <typename Key, typename Value>
 class Descriptor_hash_map
 {
   struct Slot { Key key; Value value; unsigned stamp = 0; };
-  std::vector<Slot> slots;  // a power of two in size, at most half full
+  std::vector<Slot> slots;  // 2^bits of them, at most half full
+  int bits = 0;
   unsigned current = 1;
   std::size_t entries = 0;
 
-  std::size_t home(const Key& k) const { return boost::hash<Key>()(k) & (slots.size() - 1); }
+  // boost::hash of an index is the index itself, and the descriptors of a neighbourhood are close to
+  // each other: Fibonacci hashing spreads them (the high bits of the product)
+  std::size_t home(const Key& k) const
+  {
+    const std::uint64_t h = std::uint64_t(boost::hash<Key>()(k)) * 0x9E3779B97F4A7C15ull;
+    return std::size_t(h >> (64 - bits));
+  }
 
   void grow()
   {
     std::vector<Slot> old;
     old.swap(slots);
-    slots.assign((std::max)(std::size_t(64), 2 * old.size()), Slot());
+    bits = (std::max)(6, bits + 1);
+    slots.assign(std::size_t(1) << bits, Slot());
     const unsigned live = current;
     current = 1;
     entries = 0;
