@@ -11,8 +11,6 @@
 #include <CGAL/license/Qzip.h>
 
 #include <CGAL/Qzip/surgery_plan.h>
-#include <CGAL/Qzip/qzip.h> // Qzip_result, what the executor returns
-#include <CGAL/Qzip/internal/chain_executor.h>
 #include <CGAL/Qzip/Named_function_parameters.h>
 #include <CGAL/Qzip/Qzip_visitor_base.h>
 #include <CGAL/Qzip/internal/operation_log.h>
@@ -23,7 +21,6 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/property_map.h>
 
-#include <boost/functional/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 
 #include <functional>
@@ -33,12 +30,21 @@
 
 namespace CGAL {
 namespace Qzip {
+namespace internal {
+// declared first: when chain_executor.h is included first, it includes surgery_plan.h, which includes
+// this file, and so qzip.h below, before the executor is defined
+template <typename PolygonMesh, typename VertexPointMap, typename NamedParameters> class Chain_executor;
+} // namespace internal
+} // namespace Qzip
+} // namespace CGAL
+
+#include <CGAL/Qzip/internal/chain_executor.h>
+#include <CGAL/Qzip/qzip.h> // Qzip_result, what the executor returns
+
+namespace CGAL {
+namespace Qzip {
 
 namespace internal {
-
-// declared for the case where chain_executor.h is included first: it includes surgery_plan.h, which
-// includes this file before the executor is defined
-template <typename PolygonMesh, typename VertexPointMap, typename NamedParameters> class Chain_executor;
 
 // The constraint map of the local copy: a property of the copy when the input has one, the same
 // constant map otherwise (nothing to copy).
