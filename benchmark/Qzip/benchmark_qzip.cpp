@@ -1,7 +1,9 @@
 // Times the Q-zip primitive on real meshes: path search, planning, execution and undo, by path length,
-// with a plain breadth-first search between the same two vertices as the floor. Each Q-zip is executed
-// twice (in alternating order, undone in between): by `execute_qzip()`, which records the reverse Q-zip,
-// and by the bare executor (internal::Chain_executor), to measure what the recording costs.
+// with a plain breadth-first search between the same two vertices as the floor. Each Q-zip is planned
+// twice (in alternating order): with the simulation of its execution (the default) and without
+// (`simulate_chain(false)`), to measure what the simulation costs; and executed twice (in alternating
+// order, undone in between): by `execute_qzip()`, which records the reverse Q-zip, and by the bare executor
+// (internal::Chain_executor), to measure what the recording costs.
 //
 // usage: benchmark_qzip [N per mesh = 2000] [mesh files...]   (default: bundled meshes + shared corpus)
 
@@ -24,7 +26,7 @@ typedef std::chrono::steady_clock Clock;
 static double micro(Clock::time_point a, Clock::time_point b)
 { return std::chrono::duration<double, std::micro>(b - a).count(); }
 
-struct Sample { std::size_t length; double path, plan, exec, exec_bare, undo, bfs; };
+struct Sample { std::size_t length; double path, plan, plan_unsimulated, exec, exec_bare, undo, bfs; };
 
 // the floor: a plain BFS from s until t, with a visited stamp array (no allocation per search)
 struct Plain_bfs
@@ -81,7 +83,7 @@ void run(const std::string& file, std::size_t count, std::vector<Sample>& all)
   Plain_bfs bfs;
   Q::Qzip_history<Surface_mesh> history(m);
   std::vector<Sample> samples;
-  std::size_t refused = 0, attempts = 0, unpaired = 0;
+  std::size_t refused = 0, attempts = 0, unpaired = 0, simulation_refused = 0;
   typedef Q::internal::Chain_executor<Surface_mesh, boost::property_map<Surface_mesh, CGAL::vertex_point_t>::type,
                                       CGAL::parameters::Default_named_parameters> Bare_executor;
   while(samples.size() < count && attempts < 20 * count)
@@ -102,9 +104,28 @@ void run(const std::string& file, std::size_t count, std::vector<Sample>& all)
     const auto path = Q::shortest_surgery_path(m, s, t);
     auto t1 = Clock::now();
     if(path.empty()) continue;
-    const auto plan = Q::plan_qzip(m, path, Q::Strip_operation(rng.get_int(0, 4)));
-    auto t2 = Clock::now();
-    if(!plan.is_realizable()) { ++refused; continue; }
+    const Q::Strip_operation motion = Q::Strip_operation(rng.get_int(0, 4));
+    // planned with and without the simulation, alternately first
+    auto plan_timed = [&](bool simulate)
+    {
+      const auto p0 = Clock::now();
+      auto p = Q::plan_qzip(m, path, motion, Q::parameters::simulate_chain(simulate));
+      return std::make_pair(p, micro(p0, Clock::now()));
+    };
+    const bool simulated_first = attempts % 2 == 0;
+    std::pair<Q::Surgery_plan<Surface_mesh>, double> unsimulated;
+    if(!simulated_first) unsimulated = plan_timed(false);
+    const auto simulated = plan_timed(true);
+    if(simulated_first) unsimulated = plan_timed(false);
+    const auto& plan = simulated.first;
+    x.plan = simulated.second;
+    x.plan_unsimulated = unsimulated.second;
+    if(!plan.is_realizable())
+    {
+      ++refused;
+      if(plan.status == Q::Plan_status::EXECUTION_WOULD_FAIL) ++simulation_refused;
+      continue;
+    }
     // the bare executor, before or after the recording one (alternately): the undo gives back the same
     // descriptors on Surface_mesh (its free lists are last in, first out), checked by the counts
     auto bare = [&]()
@@ -134,13 +155,13 @@ void run(const std::string& file, std::size_t count, std::vector<Sample>& all)
     bfs.run(m, s, t);
     const auto f1 = Clock::now();
     x.length = path.size() - 1;
-    x.path = micro(t0, t1); x.plan = micro(t1, t2); x.exec = micro(e0, e1); x.undo = micro(e1, e2); x.bfs = micro(f0, f1);
+    x.path = micro(t0, t1); x.exec = micro(e0, e1); x.undo = micro(e1, e2); x.bfs = micro(f0, f1);
     samples.push_back(x);
   }
   std::vector<double> exec, path;
   for(const Sample& x : samples) { exec.push_back(x.exec); path.push_back(x.path); }
-  std::printf("| %s | %zu | %zu | %zu | %.1f | %.1f |\n", file.substr(file.find_last_of('/') + 1).c_str(),
-              std::size_t(faces(m).size()), samples.size(), refused, median(exec), median(path));
+  std::printf("| %s | %zu | %zu | %zu | %zu | %.1f | %.1f |\n", file.substr(file.find_last_of('/') + 1).c_str(),
+              std::size_t(faces(m).size()), samples.size(), refused, simulation_refused, median(exec), median(path));
   if(unpaired != 0) std::fprintf(stderr, "%s: %zu Q-zips whose bare execution differed (not compared)\n", file.c_str(), unpaired);
   all.insert(all.end(), samples.begin(), samples.end());
 }
@@ -161,24 +182,25 @@ int main(int argc, char** argv)
     else
       files = { CGAL::data_file_path("meshes/spot_quadrangulated.obj"), CGAL::data_file_path("meshes/blub_quadrangulated.obj") };
   }
-  std::printf("| mesh | quads | Q-zips timed | refused or rolled back | median execute (us) | median path search (us) |\n");
-  std::printf("|---|---|---|---|---|---|\n");
+  std::printf("| mesh | quads | Q-zips timed | refused or rolled back | of which refused by the simulation | median execute (us) | median path search (us) |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
   std::vector<Sample> all;
   for(const std::string& f : files) run(f, count, all);
 
   std::printf("\n| path length | Q-zips | execute median (us) | execute p90 (us) | plan median (us) | path search median (us) | path + plan + execute median (us) | undo median (us) | plain BFS s->t median (us) | execute / BFS | path search / BFS |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
-  std::vector<std::string> recorder_rows;
+  std::vector<std::string> recorder_rows, simulation_rows;
   const std::size_t buckets[][2] = { {1, 2}, {3, 5}, {6, 8}, {9, 16}, {17, 32}, {33, 1000} };
   for(const auto& b : buckets)
   {
-    std::vector<double> exec, plan, path, total, undo, bfs, r1, r2, paired, bare, ratio;
+    std::vector<double> exec, plan, path, total, undo, bfs, r1, r2, paired, bare, ratio, unsimulated, plan_ratio;
     for(const Sample& x : all)
       if(x.length >= b[0] && x.length <= b[1])
       {
         if(x.exec_bare > 0)
         { paired.push_back(x.exec); bare.push_back(x.exec_bare); ratio.push_back(x.exec / x.exec_bare); }
         exec.push_back(x.exec); plan.push_back(x.plan); path.push_back(x.path); undo.push_back(x.undo);
+        unsimulated.push_back(x.plan_unsimulated); plan_ratio.push_back(x.plan / std::max(x.plan_unsimulated, 1e-3));
         total.push_back(x.path + x.plan + x.exec); bfs.push_back(x.bfs);
         r1.push_back(x.exec / std::max(x.bfs, 1e-3)); r2.push_back(x.path / std::max(x.bfs, 1e-3));
       }
@@ -190,9 +212,15 @@ int main(int argc, char** argv)
     std::snprintf(row, sizeof(row), "| %zu-%zu | %zu | %.1f | %.1f | %.2f |\n", b[0], b[1], paired.size(),
                   median(paired), median(bare), median(ratio));
     recorder_rows.push_back(row);
+    std::snprintf(row, sizeof(row), "| %zu-%zu | %zu | %.1f | %.1f | %.2f |\n", b[0], b[1], plan.size(),
+                  median(plan), median(unsimulated), median(plan_ratio));
+    simulation_rows.push_back(row);
   }
   std::printf("\n| path length | Q-zips compared | execute_qzip() median (us) | bare executor median (us) | median ratio |\n");
   std::printf("|---|---|---|---|---|\n");
   for(const std::string& row : recorder_rows) std::printf("%s", row.c_str());
+  std::printf("\n| path length | Q-zips | plan median, simulated (us) | plan median, simulate_chain(false) (us) | median ratio |\n");
+  std::printf("|---|---|---|---|---|\n");
+  for(const std::string& row : simulation_rows) std::printf("%s", row.c_str());
   return EXIT_SUCCESS;
 }

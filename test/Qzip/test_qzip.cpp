@@ -111,12 +111,14 @@ struct Snapshot
 struct Counters
 {
   std::size_t done = 0, refused = 0, rolled_back = 0, cancelling = 0, located = 0, checked_moves = 0;
-  std::size_t predicted_failures = 0; // refused plans whose execution, forced, fails as predicted
+  std::size_t predicted_failures = 0; // plans refused by a local check whose execution, forced, fails as predicted
+  std::size_t simulated_failures = 0; // plans refused by the simulation whose execution, forced, fails as simulated
   void print(const char* what) const
   {
     std::cout << "  " << what << ": " << done << " done (" << cancelling << " cancelling singularities, "
               << located << " with the moved pair located, " << checked_moves << " moves checked to be one edge), " << refused << " refused by the plan, "
-              << rolled_back << " rolled back, " << predicted_failures << " refused that would have rolled back" << std::endl;
+              << rolled_back << " rolled back, " << predicted_failures << " refused by a local check and "
+              << simulated_failures << " by the simulation, each failing when forced" << std::endl;
   }
 };
 
@@ -221,15 +223,25 @@ void plant_chain(Mesh& m, int n, int row, int col, int k, bool along_rows)
 /// every ordered pair of the planted singularities, four motions each: invariants, the moved pair within
 /// one edge of where it was (positions of a planar grid as a proxy), exact undo.
 /// the refusals that predict a failure of the execution: a plan that starts with a split
-/// (`SPLIT_WITHOUT_GUIDE`) or leaves a valence-6 vertex that the clean-up cannot split (`VALENCE_6_LEFT`)
-/// cannot be carried out. Forced through the executor, such a plan fails for the predicted reason and
-/// the mesh is left as it was. Returns whether `plan` is such a refusal. A history that records the
-/// Q-zips done on `m` must be passed (the roll-back re-creates elements).
+/// (`SPLIT_WITHOUT_GUIDE`), leaves a valence-6 vertex that the clean-up cannot split (`VALENCE_6_LEFT`), or
+/// whose simulated execution fails (`EXECUTION_WOULD_FAIL`) cannot be carried out. Forced through the
+/// executor, such a plan fails for the predicted reason (at the simulated step, for the simulated reason)
+/// and the mesh is left as it was: no realizable plan is refused. Returns whether `plan` is such a refusal,
+/// counted in `c`. A history that records the Q-zips done on `m` must be passed (the roll-back re-creates
+/// elements).
 template <typename Mesh, typename... History>
-bool check_predicted_failure(Mesh& m, Q::Surgery_plan<Mesh> plan, History&... history)
+bool check_predicted_failure(Counters& c, Mesh& m, Q::Surgery_plan<Mesh> plan, History&... history)
 {
-  if(plan.status != Q::Plan_status::SPLIT_WITHOUT_GUIDE && plan.status != Q::Plan_status::VALENCE_6_LEFT) return false;
+  if(plan.status != Q::Plan_status::SPLIT_WITHOUT_GUIDE && plan.status != Q::Plan_status::VALENCE_6_LEFT &&
+     plan.status != Q::Plan_status::EXECUTION_WOULD_FAIL)
+    return false;
   const Q::Plan_status status = plan.status;
+  assert((status == Q::Plan_status::EXECUTION_WOULD_FAIL) == (plan.predicted_failure != Q::Execution_failure::NONE));
+  if(status == Q::Plan_status::EXECUTION_WOULD_FAIL) // without the simulation, the same plan passes
+  {
+    const auto unsimulated = Q::plan_qzip(m, plan.sketch, plan.initial_operation, Q::parameters::simulate_chain(false));
+    assert(unsimulated.is_realizable() && unsimulated.path == plan.path && unsimulated.operations == plan.operations);
+  }
   Mesh before;
   copy_mesh(m, before);
   plan.status = Q::Plan_status::REALIZABLE;
@@ -237,9 +249,12 @@ bool check_predicted_failure(Mesh& m, Q::Surgery_plan<Mesh> plan, History&... hi
   assert(!r.is_done());
   if(status == Q::Plan_status::SPLIT_WITHOUT_GUIDE)
     assert(r.failure == Q::Execution_failure::NO_GUIDE_FOR_SPLIT && r.failed_step == 0);
-  else
+  else if(status == Q::Plan_status::VALENCE_6_LEFT)
     assert(r.failure == Q::Execution_failure::CLEANUP_IMPOSSIBLE);
+  else
+    assert(r.failure == plan.predicted_failure && r.failed_step == plan.predicted_failed_step);
   assert(are_isomorphic(m, before) && sorted_points(m) == sorted_points(before));
+  ++(status == Q::Plan_status::EXECUTION_WOULD_FAIL ? c.simulated_failures : c.predicted_failures);
   return true;
 }
 
@@ -271,7 +286,7 @@ void test_planted_pairs(Counters& c, std::size_t& longest)
             assert(!path.empty() && path.front() == s && path.back() == t);
             longest = (std::max)(longest, path.size() - 1);
             const auto plan = Q::plan_qzip(w, path, Q::Strip_operation(mo));
-            if(check_predicted_failure(w, plan)) ++c.predicted_failures;
+            check_predicted_failure(c, w, plan);
             if(!plan.is_realizable()) { ++c.refused; continue; }
             Q::Qzip_history<Mesh> history(w);
             const auto r = Q::execute_qzip(w, plan, history);
@@ -355,8 +370,7 @@ inline int winding_number(const std::vector<Point>& loop, const Point& p)
 /// random paths through waypoints between planted singularities, avoiding the other singularities;
 /// two paths whose loop winds around no other singularity are homotopic and must give isomorphic meshes.
 template <typename Mesh>
-void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& distinct_classes_differing,
-                   std::size_t& rolled_back, std::size_t& predicted_failures)
+void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& distinct_classes_differing, Counters& c)
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   CGAL::Random rng(seed);
@@ -408,10 +422,10 @@ void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& dis
           std::vector<vertex_descriptor> path;
           for(auto v : paths[a]) path.push_back(v2v[v]);
           const auto plan = Q::plan_qzip(results[a], path, Q::Strip_operation(mo));
-          if(check_predicted_failure(results[a], plan)) ++predicted_failures;
-          if(!plan.is_realizable()) continue;
+          check_predicted_failure(c, results[a], plan);
+          if(!plan.is_realizable()) { ++c.refused; continue; }
           done[a] = Q::execute_qzip(results[a], plan).is_done();
-          if(!done[a]) ++rolled_back;
+          if(done[a]) ++c.done; else ++c.rolled_back;
         }
         for(std::size_t a = 0; a < paths.size(); ++a)
           for(std::size_t b = a + 1; b < paths.size(); ++b)
@@ -457,7 +471,7 @@ std::size_t random_qzips(Mesh& m, std::size_t count, unsigned seed, Counters& c)
     const auto path = Q::shortest_surgery_path(m, s, t);
     if(path.empty()) continue;
     const auto plan = Q::plan_qzip(m, path, Q::Strip_operation(rng.get_int(0, 4)));
-    if(check_predicted_failure(m, plan, history)) ++c.predicted_failures;
+    check_predicted_failure(c, m, plan, history);
     if(!plan.is_realizable()) { ++c.refused; continue; }
     const Snapshot<Mesh> before(m);
     const std::size_t recorded = history.size();
@@ -514,7 +528,9 @@ std::size_t test_valence_6_left(const std::string& file, std::size_t wanted)
         std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> p;
         for(auto v : path) p.push_back(v2v[v]);
         const auto plan = Q::plan_qzip(w, p, Q::Strip_operation(mo));
-        assert(check_predicted_failure(w, plan));
+        Counters c;
+        const bool predicted = check_predicted_failure(c, w, plan);
+        assert(predicted && c.predicted_failures == 1);
         ++found;
       }
   return found;
@@ -726,7 +742,7 @@ void border_endpoint_qzips(Mesh& m, std::size_t max_length, Counters& c, std::si
                                               Q::Strip_operation(motion));
         assert(from_border.status == plan.status && from_border.source == sketch.front() &&
                from_border.path == plan.path && from_border.operations == plan.operations);
-        if(check_predicted_failure(m, plan)) { ++c.predicted_failures; at.clear(); }
+        if(check_predicted_failure(c, m, plan)) at.clear();
         if(!plan.is_realizable()) { ++c.refused; continue; }
         assert(on_border(plan.path.back(), m) && plan.path[plan.path.size() - (target_defect == 1 ? 2 : 1)] == sketch.back());
         const Snapshot<Mesh> before(m);
@@ -805,6 +821,9 @@ void test_border_endpoints()
   std::cout << "; border defects moved: " << moves_along_real << std::endl;
   real.print("border end points, bundled meshes with borders");
   assert(moves_real > 0);
+  // 11 rolled back on the bundled meshes before the simulation, which refuses them now
+  for(const Counters* c : { &grid_sm, &grid_ph, &along_c, &along_real, &minus_c, &real }) assert(c->rolled_back == 0);
+  assert(real.simulated_failures + along_real.simulated_failures > 0);
   std::cout << "  border defects moved by one edge: " << moves_sm << " + " << moves_ph << " (grids), "
             << moves_real << " (bundled meshes)" << std::endl;
 }
@@ -830,6 +849,8 @@ struct Border_path_counters
     for(const auto& kv : failures) std::cout << kv.second << ": " << Q::describe(kv.first) << "; ";
     std::cout << "); refused:";
     for(const auto& kv : refused) std::cout << " " << kv.second << " (" << Q::describe(kv.first) << ")";
+    std::cout << "; " << c.predicted_failures << " refused by a local check and " << c.simulated_failures
+              << " by the simulation, each failing when forced";
     std::cout << "; " << reversed << " undone by their reverse Q-zip (isomorphic), "
               << no_reverse_count(Q::Reverse_qzip_status::SINGULARITIES_CANCELLED) << " without a reverse (cancelled singularities)"
               << std::endl;
@@ -921,7 +942,7 @@ bool border_path_qzip(const Mesh& m, const std::vector<typename boost::graph_tra
     const auto by_halfedges = Q::plan_qzip(result, hs, Q::Strip_operation(motion));
     assert(by_halfedges.status == plan.status && by_halfedges.path == plan.path && by_halfedges.operations == plan.operations);
   }
-  if(check_predicted_failure(result, plan)) ++bc.c.predicted_failures;
+  check_predicted_failure(bc.c, result, plan);
   if(!plan.is_realizable()) { ++bc.refused[plan.status]; return false; }
   Mesh original;
   copy_mesh(result, original);
@@ -1071,8 +1092,10 @@ void test_border_paths()
   grid_sm.print("planted grids, Surface_mesh");
   grid_ph.print("planted grids, Polyhedron_3");
   assert(grid_sm.along.c.done == grid_ph.along.c.done && grid_sm.both == grid_ph.both);
-  // one row inside, 3 rollbacks before a first split without guide was refused by the plan
-  assert(grid_sm.along.c.rolled_back == 0 && grid_sm.inside.c.rolled_back <= 2 && grid_ph.inside.c.rolled_back <= 2);
+  // one row inside: 2 plans rolled back before the simulation (a new singularity), refused by it now
+  assert(grid_sm.along.c.rolled_back == 0 && grid_sm.inside.c.rolled_back == 0 && grid_ph.along.c.rolled_back == 0 &&
+         grid_ph.inside.c.rolled_back == 0);
+  assert(grid_sm.inside.c.simulated_failures > 0 && grid_sm.inside.c.simulated_failures == grid_ph.inside.c.simulated_failures);
   assert(grid_sm.inside.refused.count(Q::Plan_status::SPLIT_WITHOUT_GUIDE) != 0);
   assert(grid_sm.both > 0 && grid_sm.around_corner > 0 && grid_sm.along.reversed > 0);
   // every Q-zip along the border either cancelled singularities or has a reverse Q-zip
@@ -1081,7 +1104,7 @@ void test_border_paths()
     border_path_qzips<Surface_mesh>(f, 60, 5, real);
   border_path_qzips<Polyhedron>("data/polylap_suzanne_half.obj", 30, 6, real);
   real.print("paths along the border, bundled meshes");
-  assert(real.c.rolled_back <= 3);
+  assert(real.c.rolled_back == 0); // 3 before the simulation
   assert(real.c.done > 0 && real.c.done == real.reversed + real.no_reverse_count(Q::Reverse_qzip_status::SINGULARITIES_CANCELLED));
 }
 
@@ -1101,16 +1124,18 @@ int main(int argc, char** argv)
   assert(planted_sm.done == planted_ph.done && planted_sm.located == planted_ph.located);
   assert(planted_sm.rolled_back == 0 && planted_ph.rolled_back == 0);
 
-  std::size_t homotopic = 0, differing = 0, homotopy_rolled_back = 0, homotopy_predicted = 0;
+  std::size_t homotopic = 0, differing = 0;
+  Counters homotopy;
   for(unsigned seed = 1; seed <= 3; ++seed)
-    test_homotopy<Surface_mesh>(seed, homotopic, differing, homotopy_rolled_back, homotopy_predicted);
-  test_homotopy<Polyhedron>(4, homotopic, differing, homotopy_rolled_back, homotopy_predicted);
+    test_homotopy<Surface_mesh>(seed, homotopic, differing, homotopy);
+  test_homotopy<Polyhedron>(4, homotopic, differing, homotopy);
   std::cout << "  homotopy: " << homotopic << " homotopic path pairs gave isomorphic meshes; "
-            << differing << " non-homotopic pairs gave different meshes; " << homotopy_rolled_back
-            << " rolled back; " << homotopy_predicted << " refused that would have rolled back" << std::endl;
+            << differing << " non-homotopic pairs gave different meshes" << std::endl;
+  homotopy.print("homotopy, waypoint paths");
   assert(homotopic > 100);
-  // 6 rollbacks before the plan refused a first split without guide (SPLIT_WITHOUT_GUIDE)
-  assert(homotopy_rolled_back <= 5 && homotopy_predicted >= 1);
+  // a first split without guide (SPLIT_WITHOUT_GUIDE), and 5 plans whose simulation fails (they rolled back
+  // before the simulation)
+  assert(homotopy.rolled_back == 0 && homotopy.predicted_failures >= 1 && homotopy.simulated_failures >= 1);
 
   test_refusals_and_parameters();
   std::cout << "  refusals, constraints, visitor and named parameters ok" << std::endl;
@@ -1150,8 +1175,8 @@ int main(int argc, char** argv)
       run_corpus_file<Surface_mesh>(dir + "/" + f, per_mesh * 2 / 3, 11, shared);
     }
     shared.print("random Q-zips on the shared corpus, Surface_mesh");
-    // 16 rollbacks before VALENCE_6_LEFT was refused by the plan (3 refusals, each checked to fail)
-    assert(shared.rolled_back <= 13);
+    // 16 rollbacks before VALENCE_6_LEFT was refused by the plan, 13 before the simulation
+    assert(shared.rolled_back == 0 && shared.simulated_failures > 0);
   }
   return EXIT_SUCCESS;
 }

@@ -70,11 +70,13 @@ enum class Plan_status
   BORDER_FACE_COLLAPSE,  ///< at a path vertex on the border, the compass asks for a collapse on the side of the border, where there is no quad
   SPLIT_WITHOUT_GUIDE,   ///< the adjusted path starts with a split: no earlier operation gives the guide edge that delimits its fan
   VALENCE_6_LEFT,        ///< an interior v5 at an end of the path, delimiting the first or the last split, would become a valence-6 vertex that the clean-up cannot split (no two opposite neighbours of valence 4)
+  EXECUTION_WOULD_FAIL,  ///< the execution, simulated on a copy of the neighbourhood of the path, fails: `execute_qzip()` would roll it back (`Surgery_plan::predicted_failure` says why)
   EXECUTION_FAILED       ///< the chain could not be completed (a quad would degenerate, a link condition fails) or left a new singularity; the mesh was restored
 };
 
 /// \ingroup PkgQzipPrimitive
-/// Why the execution of a realizable plan was rolled back (`Plan_status::EXECUTION_FAILED`).
+/// Why the execution of a realizable plan was rolled back (`Plan_status::EXECUTION_FAILED`), or why its
+/// simulation by `plan_qzip()` failed (`Plan_status::EXECUTION_WOULD_FAIL`).
 enum class Execution_failure
 {
   NONE,                 ///< not rolled back
@@ -120,6 +122,7 @@ inline const char* describe(Plan_status s)
     case Plan_status::BORDER_FACE_COLLAPSE: return "at a path vertex on the border, the compass asks for a collapse on the side of the border";
     case Plan_status::SPLIT_WITHOUT_GUIDE: return "the adjusted path starts with a split, which has no guide edge";
     case Plan_status::VALENCE_6_LEFT: return "a v5 at an end of the path would become a valence-6 vertex that the clean-up cannot split";
+    case Plan_status::EXECUTION_WOULD_FAIL: return "the simulated execution fails";
     case Plan_status::EXECUTION_FAILED: return "the chain of operations could not be completed";
   }
   return "";

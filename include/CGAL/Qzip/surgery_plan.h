@@ -24,6 +24,7 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <array>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -53,6 +54,11 @@ struct Surgery_plan
   std::vector<vertex_descriptor> path;       ///< the adjusted path the surgery follows
   std::vector<Strip_operation> operations;   ///< one per vertex of `path`, the last is `NO_OPERATION`
   Plan_status status = Plan_status::INVALID_PATH; ///< whether the plan is realizable, or why not
+  /// when `status` is `EXECUTION_WOULD_FAIL`: why the simulated execution failed (as `Qzip_result::failure`)
+  Execution_failure predicted_failure = Execution_failure::NONE;
+  /// when `status` is `EXECUTION_WOULD_FAIL`: the index in `path` of the vertex where it failed (as
+  /// `Qzip_result::failed_step`)
+  std::size_t predicted_failed_step = 0;
 
   /// an atomic operation named by vertices (see `prelude`)
   struct Atomic_operation
@@ -105,6 +111,9 @@ struct Surgery_plan
 };
 
 namespace internal {
+
+template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap, typename FaceIsConstrainedMap>
+class Chain_simulation; // internal/chain_simulation.h, included at the end of this file
 
 enum class Turn { LEFT = 1, STRAIGHT = 0, RIGHT = -1 };
 
@@ -231,7 +240,11 @@ border the quads are counted on the side of the mesh (the inner vertices of `ske
 border: see the user manual, "Paths Along the Border"). The ends are then prepared within the one-rings
 of the two singularities (Sec. 2.6; for a border target, see the user manual, "Border End Points"), folds
 created by the preparation are removed, and the plan is checked against the border (no collapse on the
-side of the border), constrained edges and protected faces.
+side of the border), constrained edges and protected faces. Finally the execution itself (the chain, the
+clean-up of Sec. 2.7 and the check that no singularity was created, exactly as `execute_qzip()` does it)
+is simulated on a copy of the neighbourhood of the path (the faces around the vertices at most three
+edges away from it): a plan whose execution would fail is refused (`EXECUTION_WOULD_FAIL`, with the reason in
+`plan.predicted_failure`), so that a realizable plan is one that `execute_qzip()` carries out.
 The mesh is not modified.
 
 \tparam PolygonMesh a model of `FaceGraph`
@@ -250,12 +263,22 @@ The mesh is not modified.
     \cgalParamDefault{no face is protected}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{the positions, used for the defect of a border target (see `vertex_defect()`)}
+    \cgalParamDescription{the positions, used for the defect of a border target (see `vertex_defect()`) and
+                          copied for the simulation}
     \cgalParamDefault{`boost::get(CGAL::vertex_point, pm)`}
   \cgalParamNEnd
+  \cgalParamNBegin{simulate_chain}
+    \cgalParamDescription{whether a plan that passes the local checks is also simulated on a copy of the
+                          neighbourhood of its path. The simulation costs about three executions of the plan;
+                          without it, `plan_qzip()` costs about a microsecond, and a few plans it calls
+                          realizable are rolled back by `execute_qzip()` (with new descriptors for the elements
+                          the roll-back re-creates).}
+    \cgalParamType{Boolean}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
-\returns the plan; `plan.status` says whether it is realizable as far as can be told without executing it
-         (`execute_qzip()` checks every operation again before applying it).
+\returns the plan; `plan.status` says whether it is realizable, or why not (`execute_qzip()` still checks
+         every operation before applying it, and rolls back what it did when one fails).
 */
 template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
 Surgery_plan<PolygonMesh>
@@ -395,8 +418,23 @@ plan_qzip(const PolygonMesh& pm,
   if(n >= 2 && is_split(plan.operations[n - 2]) &&
      internal::leaves_valence_6_without_cleanup(plan.path[n - 1], plan.path[n - 2], plan.path, pm))
   { plan.status = Plan_status::VALENCE_6_LEFT; return plan; }
-  plan.status = plan.number_of_collapses() + plan.number_of_splits() == 0 ? Plan_status::NOTHING_TO_DO
-                                                                          : Plan_status::REALIZABLE;
+  if(plan.number_of_collapses() + plan.number_of_splits() == 0) { plan.status = Plan_status::NOTHING_TO_DO; return plan; }
+  plan.status = Plan_status::REALIZABLE;
+  if(choose_parameter(get_parameter(np, Qzip::internal_np::chain_simulation), true))
+  {
+    const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                      get_const_property_map(CGAL::vertex_point, pm));
+    // the copy's buffers are kept from plan to plan
+    static thread_local internal::Chain_simulation<PolygonMesh, std::decay_t<decltype(vpm)>, std::decay_t<decltype(ecm)>,
+                                                   std::decay_t<decltype(fcm)> > simulation;
+    const auto s = simulation.run(pm, plan, vpm, ecm, fcm);
+    if(s.failure != Execution_failure::NONE)
+    {
+      plan.status = Plan_status::EXECUTION_WOULD_FAIL;
+      plan.predicted_failure = s.failure;
+      plan.predicted_failed_step = s.failed_step;
+    }
+  }
   return plan;
 }
 
@@ -448,5 +486,7 @@ plan_qzip_motions(const PolygonMesh& pm,
 
 } // namespace Qzip
 } // namespace CGAL
+
+#include <CGAL/Qzip/internal/chain_simulation.h> // after the plan: the simulation runs the executor on it
 
 #endif // CGAL_QZIP_SURGERY_PLAN_H
