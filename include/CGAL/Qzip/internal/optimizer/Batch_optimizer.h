@@ -574,8 +574,10 @@ private:
       sources.resize((sources.size() + 1) / 2);
     }
 
-    const auto plan_np = Qzip::parameters::face_is_constrained_map(fcm,
-                           CGAL::parameters::edge_is_constrained_map(ecm).vertex_point_map(vpm));
+    // candidates are planned without simulating their execution (it costs about three executions, and a
+    // chosen surgery whose execution fails is rolled back exactly by the executor)
+    const auto plan_np = Qzip::parameters::simulate_chain(false, Qzip::parameters::face_is_constrained_map(fcm,
+                           CGAL::parameters::edge_is_constrained_map(ecm).vertex_point_map(vpm)));
     std::vector<Scored> chosen;
     for(vertex_descriptor s : sources)
     {
