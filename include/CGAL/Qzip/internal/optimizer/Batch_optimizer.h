@@ -29,9 +29,9 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
-#include <cstdlib>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <set>
 #include <unordered_set>
