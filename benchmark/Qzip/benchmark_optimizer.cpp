@@ -4,9 +4,13 @@
 //
 // usage: benchmark_optimizer [--corpus DIR] [--runs R] [--max-level L] [--skip-corpus] [--skip-large]
 //                            [--skip-genus3] [--measure] [--mesh FILE]... [--trace]
-//                            [--max-batches N] [--patience N] [--count-stop] [--seed S]
+//                            [--max-batches N] [--patience N] [--count-stop] [--seed S] [--min-level L]
+//                            [--fingerprint]
 //   --runs R       runs per mesh below 100k quads, the median time is reported (default 3)
 //   --max-level L  Catmull-Clark levels of the scaling series (default 4: ~1M quads)
+//   --min-level L  run the scaling series from this level on (default 0; the lower levels are still built)
+//   --fingerprint  print a hash of the sorted vertex positions of each result (to check that a change
+//                  meant to be exact gives the same meshes)
 //   --measure      recount the singularities after every surgery (slow) to measure how often the change
 //                  predicted from the plan is the actual one (meshes below 20k quads)
 //   --mesh FILE    only this mesh (repeatable): no corpus, scaling series nor genus-3 test
@@ -28,9 +32,11 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <ctime>
+#include <functional>
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -59,6 +65,19 @@ static bool trace = false;
 static std::size_t max_batches = 200, patience = 20;
 static unsigned int seed = 0;
 static bool count_stop = false;
+static bool fingerprint = false;
+
+// a hash of the sorted vertex positions of m (independent of the vertex order)
+static std::size_t position_fingerprint(const Mesh& m)
+{
+  std::vector<std::array<double, 3> > ps;
+  for(auto v : vertices(m)) ps.push_back({{ m.point(v).x(), m.point(v).y(), m.point(v).z() }});
+  std::sort(ps.begin(), ps.end());
+  std::size_t h = ps.size();
+  for(const auto& p : ps)
+    for(double x : p) h = h * 1000003u ^ std::hash<double>()(x);
+  return h;
+}
 
 // the stop predicate of the runs: the default one with the parameters given on the command line, or
 // (--count-stop) the same with No_improvement_stop_predicate (progress = fewer singularities only)
@@ -76,7 +95,7 @@ struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
   void on_batch_finished(const Q::Optimizer_statistics& s)
   {
     std::cerr << "    batch " << s.batch << ": " << s.number_of_singularities << " singularities, " << s.number_of_faces
-              << " faces, pairing distance " << s.pairing_distance << ", " << s.surgeries_in_last_batch << " surgeries, " << s.elapsed_seconds << " s (scoring "
+              << " faces, pairing distance " << s.pairing_distance << ", " << s.candidates_in_last_batch << " candidates, " << s.surgeries_in_last_batch << " surgeries (so far " << s.number_of_skipped_surgeries << " skipped, " << s.number_of_undone_surgeries << " undone, " << s.number_of_failed_surgeries << " failed), " << s.elapsed_seconds << " s (scoring "
               << s.scoring_seconds << ", execution " << s.execution_seconds << ")" << std::endl;
   }
 };
@@ -88,6 +107,7 @@ struct Row
   Q::Optimizer_statistics stats;
   double seconds = 0;
   std::string exact;
+  std::size_t fingerprint = 0;
 };
 
 static std::string fmt(double x, int p = 3)
@@ -133,6 +153,7 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
     if(i + 1 == runs)
     {
       row.after = Q::compute_mesh_report(m);
+      row.fingerprint = position_fingerprint(m);
       if(measure && row.before.number_of_faces < 20000)
       {
         Mesh mm;
@@ -149,8 +170,9 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
   row.seconds = times[times.size() / 2];
   std::cerr << "  " << name << ": " << singular(row.before) << " -> " << singular(row.after) << " singularities, "
             << row.before.number_of_faces << " -> " << row.after.number_of_faces << " faces, " << row.stats.batch << " batches + " << row.stats.end_game_rounds << " end-game rounds, "
-            << fmt(row.seconds) << " s (CPU " << fmt(cpu[cpu.size() / 2]) << " s)"
-            << std::endl;
+            << fmt(row.seconds) << " s (CPU " << fmt(cpu[cpu.size() / 2]) << " s)";
+  if(fingerprint) std::cerr << ", fingerprint " << std::hex << row.fingerprint << std::dec;
+  std::cerr << std::endl;
   return row;
 }
 
@@ -214,7 +236,7 @@ static void make_genus3_plate(Mesh& m)
 int main(int argc, char** argv)
 {
   std::string corpus = QZIP_SHARED_DATA_DIR;
-  int runs = 3, max_level = 4;
+  int runs = 3, max_level = 4, min_level = 0;
   bool skip_corpus = false, skip_large = false, skip_genus3 = false, measure = false;
   std::vector<std::string> meshes;
   for(int i = 1; i < argc; ++i)
@@ -223,6 +245,8 @@ int main(int argc, char** argv)
     if(a == "--corpus" && i + 1 < argc) corpus = argv[++i];
     else if(a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
     else if(a == "--max-level" && i + 1 < argc) max_level = std::atoi(argv[++i]);
+    else if(a == "--min-level" && i + 1 < argc) min_level = std::atoi(argv[++i]);
+    else if(a == "--fingerprint") fingerprint = true;
     else if(a == "--skip-corpus") skip_corpus = true;
     else if(a == "--skip-large") skip_large = true;
     else if(a == "--skip-genus3") skip_genus3 = true;
@@ -277,6 +301,7 @@ int main(int argc, char** argv)
     {
       if(level > 0) CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(1));
       const std::size_t n = faces(m).size();
+      if(level < min_level) continue;
       print_row(run("gargoyle CC" + std::to_string(level) + " (" + std::to_string(n) + " quads)", m, n < 100000 ? runs : 1, false), false);
     }
   }

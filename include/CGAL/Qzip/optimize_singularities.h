@@ -61,11 +61,17 @@ or 5 not on a feature nor a protected face). For each, the three closest v3-like
 v5-like singularities (graph distance through passable vertices; boundary and feature defects met on the
 way are also tried) are joined by a shortest surgery path, and the four motions of each pair are planned
 (24 candidate surgeries). Every realizable plan is scored from the plan alone (no execution) by the
-scoring functor; each singularity keeps its best improving candidate. The candidates are sorted and the
-best half is executed serially, skipping any surgery whose path or its one-ring was already operated on
-in this batch. After each surgery its scar is smoothed (see `smooth_quad_mesh()`); if the surgery leaves
-more inverted quads (scaled Jacobian `<= 0`) near its path than there were, the smoothing and the
-surgery are undone exactly. After the batch the union of its scars is smoothed again. The stop predicate
+scoring functor; each singularity keeps its best improving candidate (and its next three, in order). The
+candidates are sorted and the best half is executed serially, skipping any surgery whose path comes within
+three edges of a path already operated on in this batch (a singularity whose best candidate is skipped
+tries its next ones instead). After each surgery its scar is smoothed (see `smooth_quad_mesh()`); if the
+surgery leaves more inverted quads (scaled Jacobian `<= 0`) near its path than there were, the smoothing
+and the surgery are undone exactly. A kept Q-zip moves its pair by about one edge; while each end of the
+pair is still more than three edges from the singularity of the opposite sign it is pulled towards (its
+closest one other than the pair, at the start of the batch, as `Pairing_term` sees it) and no surgery of
+the batch came near those, the pair is Q-zipped again along a shortest path between its new places, with
+the motion whose predicted landings are closest to them, under the same checks: far apart singularities
+travel several edges in one batch. After the batch the union of its scars is smoothed again. The stop predicate
 is asked before every batch (by default: at most 200 batches, and stop when 20 batches in a row neither
 lowered the number of singularities nor brought them closer to partners of the opposite sign, see
 `Default_stop_predicate`).

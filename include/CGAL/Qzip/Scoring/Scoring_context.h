@@ -424,17 +424,25 @@ public:
   /// them. Cheaper than `nearest_singularities(v)`: the search around `v` stops once it is known.
   int opposite_singularity_distance(vertex_descriptor v, int sign, vertex_descriptor x1, vertex_descriptor x2) const
   {
+    return closest_opposite_singularity(v, sign, x1, x2).distance;
+  }
+
+  /// the singularity whose distance `opposite_singularity_distance()` gives (distance -1 and `null_vertex()`
+  /// if there is none).
+  Nearby closest_opposite_singularity(vertex_descriptor v, int sign, vertex_descriptor x1, vertex_descriptor x2) const
+  {
     const int i = index(v);
-    if(i < 0) return -1;
+    if(i < 0) return Nearby{ GT::null_vertex(), 0, -1 };
     const int i1 = index_or_none(x1), i2 = index_or_none(x2);
     compute_nearest(i, i1, i2, max_nearest_singularities, sign);
     const std::size_t K = max_nearest_singularities;
     for(std::size_t k = std::size_t(i) * K; k < std::size_t(i) * K + near_labels.count[std::size_t(i)]; ++k)
     {
       const int j = near_labels.source[k];
-      if(j != i && j != i1 && j != i2 && defects[std::size_t(j)] * sign < 0) return near_labels.distance[k];
+      if(j != i && j != i1 && j != i2 && defects[std::size_t(j)] * sign < 0)
+        return Nearby{ by_index[std::size_t(j)], defects[std::size_t(j)], near_labels.distance[k] };
     }
-    return -1;
+    return Nearby{ GT::null_vertex(), 0, -1 };
   }
 
   /// the graph distance from `a` to `b`, or `max_radius + 1` if it is larger than `max_radius`.

@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <set>
 #include <unordered_set>
@@ -51,6 +52,12 @@ struct Optimizer_settings
   double quality_floor = 0.1;
   bool end_game = true;
   std::size_t max_end_game_rounds = 10;
+  // a source whose best candidate is skipped (its region already operated on in the batch) tries its next
+  // best ones, up to this many
+  std::size_t alternatives = 3;
+  // a kept Q-zip is followed by more Q-zips of the same pair in the same batch while each end is more than
+  // this many edges from the singularity of the opposite sign it is pulled towards (0: never, see follow())
+  std::size_t follow_min_distance = 3;
 };
 
 // The multiple-choice batches of the paper's Sec. 4.1 (see optimize_singularities()).
@@ -66,6 +73,7 @@ class Batch_optimizer
   typedef Scoring_context<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap> Context;
   typedef Quad_smoother<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap, GeomTraits> Smoother;
   typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<unsigned int> >::type Stamp_map;
+  typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<std::size_t> >::type Id_map;
 
   // a surgery of the end game, by the positions of its ends and its motion
   typedef std::array<double, 7> Surgery_key;
@@ -77,7 +85,10 @@ class Batch_optimizer
     Point source_point;
     int predicted_cancellations;
     Surgery_key key{}; // in the end game
+    std::vector<Scored> alternatives; // in a batch: the next best candidates of the source, tried if this one is skipped
+    std::pair<std::size_t, std::size_t> partners{ no_partner, no_partner }; // see watch_partners()
   };
+  static const std::size_t no_partner = std::size_t(-1);
   enum Outcome { KEPT, UNDONE, FAILED, SKIPPED };
 
   PolygonMesh& pm;
@@ -97,6 +108,15 @@ class Batch_optimizer
 
   Stamp_map search_stamp, op_stamp, scar_stamp, outer_stamp;
   unsigned int search_epoch = 0, batch_epoch = 0, outer_epoch = 0;
+  // op_stamp: the number of the surgery whose region first covered the vertex; the surgeries of this
+  // batch are numbered from first_in_batch, those of the current pair (see follow()) from first_of_pair
+  unsigned int surgery_serial = 0, first_in_batch = 1, first_of_pair = 1;
+  // the partners of the chosen candidates of the batch (see watch_partners()): partner_id is
+  // partner_base + 1 + their index, and a partner is lost once the region of a surgery covers it
+  Id_map partner_id;
+  std::size_t partner_base = 0;
+  std::vector<vertex_descriptor> partner_vertices;
+  std::vector<unsigned char> partner_lost;
   // partner search on the context's arrays
   std::vector<unsigned int> search_visit;
   std::vector<int> search_from, index_queue;
@@ -114,7 +134,8 @@ public:
       search_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       op_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       scar_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
-      outer_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm))
+      outer_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
+      partner_id(get(CGAL::dynamic_vertex_property_t<std::size_t>(), pm))
   {
     smoother.quality_floor = settings.quality_floor;
     for(vertex_descriptor v : vertices(pm))
@@ -123,6 +144,7 @@ public:
       put(op_stamp, v, 0u);
       put(scar_stamp, v, 0u);
       put(outer_stamp, v, 0u);
+      put(partner_id, v, std::size_t(0));
     }
   }
 
@@ -369,20 +391,29 @@ private:
   template <typename NP>
   bool best_candidate(vertex_descriptor s, const NP& plan_np, Scored& best)
   {
-    bool found = false;
+    std::vector<Scored> improving;
     score_candidates(s, plan_np,
                      [&](const Qzip_candidate<PolygonMesh>& c, Surgery_plan<PolygonMesh>& plan, double score)
     {
-      if(score < 0 && (!found || score < best.score))
-      {
-        found = true;
-        best.score = score;
-        best.predicted_cancellations = c.predicted_cancellations;
-        best.plan = std::move(plan);
-      }
+      if(score >= 0) return;
+      Scored e;
+      e.score = score;
+      e.predicted_cancellations = c.predicted_cancellations;
+      e.plan = std::move(plan);
+      improving.push_back(std::move(e));
     });
-    if(found) best.source_point = get(vpm, s);
-    return found;
+    if(improving.empty()) return false;
+    std::stable_sort(improving.begin(), improving.end(), [](const Scored& a, const Scored& b) { return a.score < b.score; });
+    const std::size_t alternatives = (std::min)(improving.size() - 1, settings.alternatives);
+    best = std::move(improving[0]);
+    best.source_point = get(vpm, s);
+    best.alternatives.clear();
+    for(std::size_t i = 1; i <= alternatives; ++i)
+    {
+      improving[i].source_point = best.source_point;
+      best.alternatives.push_back(std::move(improving[i]));
+    }
+    return true;
   }
 
   Surgery_key key(const Surgery_plan<PolygonMesh>& plan) const
@@ -410,9 +441,22 @@ private:
   // ---------------------------------------------------------------------------------------------
   // execution
 
+  // marks the vertices of `region` not yet operated on in this batch as operated on by the current surgery
   void mark(const std::vector<vertex_descriptor>& region)
   {
-    for(vertex_descriptor v : region) put(op_stamp, v, batch_epoch);
+    for(vertex_descriptor v : region)
+    {
+      if(get(op_stamp, v) < first_in_batch) put(op_stamp, v, surgery_serial);
+      const std::size_t p = get(partner_id, v);
+      if(p > partner_base) partner_lost[p - partner_base - 1] = 1;
+    }
+  }
+
+  // whether v lies in the region of a surgery of this batch, other than those of the current pair
+  bool operated_on(vertex_descriptor v) const
+  {
+    const unsigned int s = get(op_stamp, v);
+    return s >= first_in_batch && s < first_of_pair;
   }
 
   // whether v is singular (the context's definition of the defect, on the mesh as it is now)
@@ -456,16 +500,21 @@ private:
   // executes the candidate unless its region was already operated on in this batch; keeps it if the
   // smoothed scar has no more inverted quads than before (and, if `require_decrease`, if the number of
   // singularities near its path dropped), else undoes it exactly
+  // (`follows`: a surgery of the same pair as the previous one, see follow(), which may operate on the region
+  // of the previous one; `moved`: where the pair is after a kept surgery)
   template <typename NP>
-  Outcome execute(const Scored& cand, const NP& exec_np, bool require_decrease)
+  Outcome execute(const Scored& cand, const NP& exec_np, bool require_decrease, bool follows = false,
+                  std::pair<vertex_descriptor, vertex_descriptor>* moved = nullptr)
   {
     const Surgery_plan<PolygonMesh>& plan = cand.plan;
+    ++surgery_serial;
+    if(!follows) first_of_pair = surgery_serial;
     // The region of the plan must not have been operated on in this batch. Only the path vertices are
     // read before the check: a vertex removed by an earlier surgery of the batch lies within three edges
     // of its path, which is marked, so no removed vertex is ever walked around. A path at four edges or
     // more from the earlier paths has its one-ring (what its operations touch) disjoint from theirs.
     for(vertex_descriptor v : plan.path)
-      if(get(op_stamp, v) == batch_epoch) { ++stats.number_of_skipped_surgeries; return SKIPPED; }
+      if(operated_on(v)) { ++stats.number_of_skipped_surgeries; return SKIPPED; }
     if(!keeps_face_count(plan)) { ++stats.number_of_skipped_surgeries; return SKIPPED; }
     // A surgery only removes vertices within three edges of its path (the far corners of the clean-up);
     // the vertices at distance four are never touched: they stay alive through an undo and lead back
@@ -491,15 +540,32 @@ private:
       region.resize(inside);
       level.resize(inside);
     }
+    std::vector<vertex_descriptor> inner;
     for(std::size_t i = 0; i < region.size(); ++i)
     {
-      if(level[i] < 4) put(op_stamp, region[i], batch_epoch);
+      if(level[i] < 4) inner.push_back(region[i]);
       else shell.push_back(region[i]);
     }
+    mark(inner);
+    // the vertices of the region that lie in a scar of this batch, by position: an undo re-creates the
+    // removed vertices at the same places, with new descriptors (which may be recycled, with or without
+    // their former stamps, depending on the mesh type), and they must be in the scars as before
+    std::vector<std::pair<Point, bool> > in_scar;
+    for(vertex_descriptor v : inner) in_scar.emplace_back(get(vpm, v), get(scar_stamp, v) == batch_epoch);
+    std::sort(in_scar.begin(), in_scar.end(), [](const std::pair<Point, bool>& a, const std::pair<Point, bool>& b)
+              { return point_less(a.first, b.first); });
     auto mark_after_undo = [&]()
     {
       mark(region);           // no walk: some of these descriptors may be dead
-      mark(ball(shell, 4));   // walks from vertices that are alive
+      const std::vector<vertex_descriptor> around = ball(shell, 4); // walks from vertices that are alive
+      mark(around);
+      for(vertex_descriptor v : around)
+      {
+        const auto it = std::lower_bound(in_scar.begin(), in_scar.end(), std::make_pair(get(vpm, v), false),
+                                         [](const std::pair<Point, bool>& a, const std::pair<Point, bool>& b)
+                                         { return point_less(a.first, b.first); });
+        if(it != in_scar.end() && it->first == get(vpm, v)) put(scar_stamp, v, it->second ? batch_epoch : 0u);
+      }
     };
 
     std::vector<vertex_descriptor> near_path;
@@ -542,12 +608,176 @@ private:
     }
     for(vertex_descriptor v : scar) put(scar_stamp, v, batch_epoch);
     edited_vertices.insert(edited_vertices.end(), scar.begin(), scar.end());
-    mark(ball(r.touched_vertices, 2)); // new vertices may reuse the descriptors of removed ones
+    // new vertices (all touched) may reuse the descriptors of removed ones, with their marks
+    for(vertex_descriptor v : r.touched_vertices) put(op_stamp, v, surgery_serial);
+    mark(ball(r.touched_vertices, 2));
     stats.number_of_faces = stats.number_of_faces + r.number_of_splits - r.number_of_collapses;
     ++stats.number_of_surgeries;
     ++stats.surgeries_in_last_batch;
     visitor.on_surgery(plan, cand.score, -cand.predicted_cancellations);
+    if(moved != nullptr) *moved = std::make_pair(r.moved_source, r.moved_target);
     return KEPT;
+  }
+
+  // whether v is an interior vertex of valence 3 or 5 incident to no constrained edge and no protected
+  // face (on the mesh as it is now)
+  bool can_move_now(vertex_descriptor v) const
+  {
+    return (degree(v, pm) == 3 || degree(v, pm) == 5) && is_passable_now(v);
+  }
+
+  bool is_passable_now(vertex_descriptor v) const
+  {
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      if(is_border_edge(h, pm) || get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm)))) return false;
+    return true;
+  }
+
+  // a shortest path from s to t through passable vertices on the mesh as it is now, if one has at most
+  // `max_length` edges (empty otherwise)
+  std::vector<vertex_descriptor> shortest_path_now(vertex_descriptor s, vertex_descriptor t, std::size_t max_length)
+  {
+    ++search_epoch;
+    std::vector<vertex_descriptor> queue(1, s);
+    std::vector<std::size_t> from(1, 0), level(1, 0);
+    put(search_stamp, s, search_epoch);
+    for(std::size_t i = 0; i < queue.size(); ++i)
+    {
+      if(queue[i] == t)
+      {
+        std::vector<vertex_descriptor> path;
+        for(std::size_t j = i; ; j = from[j]) { path.push_back(queue[j]); if(j == 0) break; }
+        std::reverse(path.begin(), path.end());
+        return path;
+      }
+      if(level[i] >= max_length || (i > 0 && !is_passable_now(queue[i]))) continue;
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(queue[i], pm), pm))
+      {
+        const vertex_descriptor w = source(h, pm);
+        if(get(search_stamp, w) == search_epoch) continue;
+        put(search_stamp, w, search_epoch);
+        queue.push_back(w);
+        from.push_back(i);
+        level.push_back(level[i] + 1);
+      }
+    }
+    return std::vector<vertex_descriptor>();
+  }
+
+  // the index of p among the watched partners of the batch (added if needed), no_partner for null_vertex()
+  std::size_t watch(vertex_descriptor p)
+  {
+    if(p == GT::null_vertex()) return no_partner;
+    const std::size_t id = get(partner_id, p);
+    if(id > partner_base) return id - partner_base - 1;
+    partner_vertices.push_back(p);
+    partner_lost.push_back(0);
+    put(partner_id, p, partner_base + partner_vertices.size());
+    return partner_vertices.size() - 1;
+  }
+
+  // the closest singularity of the opposite sign of each end of the candidate, the pair excluded (what
+  // Pairing_term pulls towards), at the start of the batch, watched: once the region of a surgery covers
+  // it (before the surgery, when all its vertices are alive), it may be gone and follow() stops
+  std::pair<std::size_t, std::size_t> watch_partners(const Scored& c)
+  {
+    const vertex_descriptor s = c.plan.source, t = c.plan.target;
+    return std::make_pair(watch(ctx.closest_opposite_singularity(s, ctx.defect(s), s, t).vertex),
+                          watch(ctx.closest_opposite_singularity(t, ctx.defect(t), s, t).vertex));
+  }
+
+  // the distances from `from` to the vertices of `queries` on the mesh as it is now (-1 for those not reached)
+  std::vector<int> distances_now(vertex_descriptor from, const std::vector<vertex_descriptor>& queries)
+  {
+    std::vector<int> out(queries.size(), -1);
+    std::size_t found = 0;
+    ++search_epoch;
+    std::vector<vertex_descriptor> queue(1, from);
+    std::vector<int> level(1, 0);
+    put(search_stamp, from, search_epoch);
+    for(std::size_t i = 0; i < queue.size() && found < queries.size(); ++i)
+    {
+      for(std::size_t q = 0; q < queries.size(); ++q)
+        if(queries[q] == queue[i] && out[q] < 0) { out[q] = level[i]; ++found; }
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(queue[i], pm), pm))
+      {
+        const vertex_descriptor w = source(h, pm);
+        if(get(search_stamp, w) == search_epoch) continue;
+        put(search_stamp, w, search_epoch);
+        queue.push_back(w);
+        level.push_back(level[i] + 1);
+      }
+    }
+    return out;
+  }
+
+  // After a kept Q-zip of a pair along a path of `length` edges, the pair now at `moved`, its ends pulled
+  // towards their `partners` (see watch_partners()): Q-zips the pair again along a shortest path between its
+  // new places while each end is still more than `follow_min_distance` edges from its partner and no
+  // surgery came near the partners, a plan brings the ends closer to their partners in sum (of the four
+  // motions, the one whose landings are closest to them, then the one that keeps the number of faces
+  // closest to the initial one) and the surgery is kept (the same checks as in a batch, except that it may
+  // operate on the region of the previous Q-zips of the pair). Far from their partners, singularities thus
+  // travel several edges in one batch instead of one.
+  template <typename NP>
+  void follow(std::pair<vertex_descriptor, vertex_descriptor> moved, std::pair<std::size_t, std::size_t> partners,
+              std::size_t length, const NP& plan_np)
+  {
+    if(partners.first == no_partner || partners.second == no_partner || partners.first == partners.second) return;
+    const std::pair<vertex_descriptor, vertex_descriptor> partner(partner_vertices[partners.first],
+                                                                  partner_vertices[partners.second]);
+    int previous = (std::numeric_limits<int>::max)(); // the actual sum of the distances to the partners: it must drop
+    for(;;)
+    {
+      const vertex_descriptor s = moved.first, t = moved.second;
+      if(s == GT::null_vertex() || t == GT::null_vertex() || s == t) return;
+      if(partner_lost[partners.first] || partner_lost[partners.second]) return;
+      if(!can_move_now(s) || !can_move_now(t)) return;
+      const std::vector<vertex_descriptor> path = shortest_path_now(s, t, length + 2);
+      if(path.empty()) return;
+      length = path.size() - 1;
+      std::vector<Surgery_plan<PolygonMesh> > plans;
+      std::vector<vertex_descriptor> at_source(1, s), at_target(1, t);
+      for(int m = 0; m < 4; ++m)
+      {
+        Surgery_plan<PolygonMesh> plan = plan_qzip(pm, path, Strip_operation(m), plan_np);
+        if(!plan.is_realizable() || !keeps_face_count(plan)) continue;
+        vertex_descriptor sl, tl;
+        predict_landings(plan, pm, sl, tl);
+        if(sl == GT::null_vertex() || tl == GT::null_vertex()) continue;
+        plans.push_back(std::move(plan));
+        at_source.push_back(sl);
+        at_target.push_back(tl);
+      }
+      if(plans.empty()) return;
+      const std::vector<int> ds = distances_now(partner.first, at_source);
+      const std::vector<int> dt = distances_now(partner.second, at_target);
+      if(ds[0] < 0 || dt[0] < 0 || ds[0] + dt[0] >= previous) return;
+      if(ds[0] <= int(settings.follow_min_distance) || dt[0] <= int(settings.follow_min_distance)) return;
+      previous = ds[0] + dt[0];
+      std::size_t best = 0;
+      long best_faces = 0;
+      for(std::size_t k = 1; k <= plans.size(); ++k)
+      {
+        const Surgery_plan<PolygonMesh>& plan = plans[k - 1];
+        const long faces_after = std::abs(long(stats.number_of_faces) + long(plan.number_of_splits()) -
+                                          long(plan.number_of_collapses()) - long(stats.initial_number_of_faces));
+        const int d = ds[k] + dt[k];
+        if(ds[k] < 0 || dt[k] < 0 || d >= ds[0] + dt[0]) continue;
+        if(best == 0 || d < ds[best] + dt[best] || (d == ds[best] + dt[best] && faces_after < best_faces))
+        {
+          best = k;
+          best_faces = faces_after;
+        }
+      }
+      if(best == 0) return;
+      Scored step;
+      step.score = double(ds[best] + dt[best] - ds[0] - dt[0]); // reported to the visitor: negative
+      step.predicted_cancellations = 0;
+      step.plan = std::move(plans[best - 1]);
+      step.source_point = get(vpm, s);
+      if(execute(step, plan_np, false, true, &moved) != KEPT) return;
+    }
   }
 
   // One batch (Sec. 4.1), or one round of the end game: every singularity that can start a surgery and
@@ -558,6 +788,10 @@ private:
   std::size_t run_batch(bool end_game)
   {
     ++batch_epoch;
+    first_in_batch = surgery_serial + 1;
+    partner_base += partner_vertices.size() + 1;
+    partner_vertices.clear();
+    partner_lost.clear();
     CGAL::Real_timer score_timer, exec_timer;
     score_timer.start();
     stats.surgeries_in_last_batch = 0;
@@ -601,6 +835,12 @@ private:
       stats.candidates_in_last_batch = chosen.size();
       chosen.resize((chosen.size() + 1) / 2);
     }
+    if(!end_game && settings.follow_min_distance > 0) // asked before the mesh changes
+      for(Scored& c : chosen)
+      {
+        c.partners = watch_partners(c);
+        for(Scored& a : c.alternatives) a.partners = watch_partners(a);
+      }
     score_timer.stop();
     stats.scoring_seconds += score_timer.time();
     if(!end_game) visitor.on_batch_scored(stats, chosen.size());
@@ -608,7 +848,19 @@ private:
     exec_timer.start();
     std::size_t executed = 0;
     for(const Scored& c : chosen)
-      if(execute(c, plan_np, end_game) != SKIPPED) ++executed;
+    {
+      const bool follows = !end_game && settings.follow_min_distance > 0;
+      std::pair<vertex_descriptor, vertex_descriptor> moved;
+      const Scored* done = &c;
+      Outcome outcome = execute(c, plan_np, end_game, false, &moved);
+      for(std::size_t a = 0; outcome == SKIPPED && a < c.alternatives.size(); ++a)
+      {
+        done = &c.alternatives[a];
+        outcome = execute(*done, plan_np, end_game, false, &moved);
+      }
+      if(outcome != SKIPPED) ++executed;
+      if(outcome == KEPT && follows) follow(moved, done->partners, done->plan.path.size() - 1, plan_np);
+    }
     // an undone or rolled back surgery may give new descriptors to the vertices it re-created
     const bool edited = executed > 0;
 
