@@ -717,7 +717,8 @@ private:
         kept = true;
         stats.number_of_faces = std::size_t(long(stats.number_of_faces) + chain.face_change);
         stats.number_of_surgeries += chain.plans.size();
-        for(const Surgery_plan<PolygonMesh>& plan : chain.plans) visitor.on_surgery(plan, 0., 0);
+        for(std::size_t k = 0; k < chain.plans.size(); ++k) // not scored: score 0
+          visitor.on_surgery(chain.plans[k], 0., -chain.predicted_cancellations[k]);
         edited_vertices.insert(edited_vertices.end(), chain.scar.begin(), chain.scar.end());
       }
       stats.number_of_undone_surgeries += chains.number_of_undos();

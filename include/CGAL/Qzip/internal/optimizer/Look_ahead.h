@@ -57,8 +57,9 @@ public:
   {
     int max_distance = 4;      // `a` and `b` at most this many edges apart
     int max_depth = 3;         // Q-zips in a chain
-    std::size_t width = 4;     // Q-zips executed per step of the search
-    std::size_t partners = 3;  // singularities beyond `b` tried as partner
+    std::size_t width = 8;     // Q-zips executed per step of the search
+    std::size_t budget = 400;  // Q-zips executed per search, at most
+    std::size_t partners = 5;  // singularities beyond `b` tried as partner
     int smoothing_iterations = 5;
     double quality_floor = 0.1;
     bool smooth = true;
@@ -68,6 +69,7 @@ public:
   struct Chain
   {
     std::vector<Plan> plans;             // its Q-zips, in the order of execution
+    std::vector<int> predicted_cancellations; // for each, the cancellations its landings predicted
     std::vector<vertex_descriptor> scar; // the vertices smoothed around it (alive)
     long face_change = 0;                // number of faces after minus before
   };
@@ -103,8 +105,13 @@ public:
     if(d < 0) return false;
     Qzip_history<PolygonMesh, VertexPointMap> history(pm, vpm);
     Path_state state;
+    budget_end = executions + settings.budget;
     const bool kept = search(a, d, settings.max_depth, history, keeps_face_count, state, chain);
-    if(kept) std::reverse(chain.plans.begin(), chain.plans.end());
+    if(kept)
+    {
+      std::reverse(chain.plans.begin(), chain.plans.end());
+      std::reverse(chain.predicted_cancellations.begin(), chain.predicted_cancellations.end());
+    }
     return kept;
   }
 
@@ -123,7 +130,7 @@ private:
   {
     Plan plan;
     int predicted_cancellations;
-    std::size_t sketch_length;
+    bool through_b; // not a Q-zip of the pair a, b itself
   };
 
   // the valence of v if v is passable (no border or constrained edge, no protected face around it), else -1
@@ -199,7 +206,8 @@ private:
     const int da = valence_if_passable(a) - 4;
     Search sa;
     search_from(a, settings.max_distance, {}, sa);
-    std::vector<std::vector<vertex_descriptor> > sketches;
+    std::vector<std::vector<vertex_descriptor> > sketches; // and whether each goes through b
+    std::vector<bool> through_b;
     std::size_t opposites = 0;
     for(vertex_descriptor b : sa.order)
     {
@@ -207,6 +215,7 @@ private:
       if(b == a || !(db == 3 || db == 5) || (db - 4) * da >= 0) continue;
       const std::vector<vertex_descriptor> to_b = sa.path_to(b);
       sketches.push_back(to_b);
+      through_b.push_back(false);
       std::unordered_set<vertex_descriptor, Vertex_hash> avoid(to_b.begin(), to_b.end() - 1);
       Search sb;
       search_from(b, settings.max_distance, avoid, sb);
@@ -218,16 +227,17 @@ private:
         const std::vector<vertex_descriptor> beyond = sb.path_to(c);
         sketch.insert(sketch.end(), beyond.begin() + 1, beyond.end());
         sketches.push_back(std::move(sketch));
+        through_b.push_back(true);
         if(++partners == settings.partners) break;
       }
       if(++opposites == 2) break;
     }
 
     std::vector<Candidate> out;
-    for(const std::vector<vertex_descriptor>& sketch : sketches)
+    for(std::size_t i = 0; i < sketches.size(); ++i)
       for(int m = 0; m < 4; ++m)
       {
-        Plan plan = plan_qzip(pm, sketch, Strip_operation(m), plan_np);
+        Plan plan = plan_qzip(pm, sketches[i], Strip_operation(m), plan_np);
         if(!plan.is_realizable()) continue;
         vertex_descriptor ls, lt;
         predict_landings(plan, pm, ls, lt);
@@ -239,13 +249,14 @@ private:
           const int moved = (l == ls ? plan.source_valence : plan.target_valence) - 4;
           if((dl == 3 || dl == 5) && (dl - 4) * moved < 0) predicted += 2;
         }
-        out.push_back(Candidate{ std::move(plan), predicted, sketch.size() });
+        out.push_back(Candidate{ std::move(plan), predicted, through_b[i] });
       }
     std::stable_sort(out.begin(), out.end(), [](const Candidate& x, const Candidate& y)
     {
       if(x.predicted_cancellations != y.predicted_cancellations)
         return x.predicted_cancellations > y.predicted_cancellations;
-      return x.sketch_length > y.sketch_length; // through b first
+      if(x.through_b != y.through_b) return x.through_b;
+      return x.plan.path.size() < y.plan.path.size(); // the shortest Q-zips distort the least
     });
     return out;
   }
@@ -284,15 +295,26 @@ private:
   }
 
   // smooths the scar of the chain and checks it as a batch checks a surgery (no more inverted quads,
-  // none worse than both the worst one before and the quality floor); restores the positions if not
+  // none worse than both the worst one before and the quality floor); restores the positions if not.
+  // The touched vertices of the earlier Q-zips that a later one came near are not known any more: they
+  // lie within three edges of its path, so the scar reaches three edges around the known ones and the
+  // check four.
   bool passes_quality_guard(const Path_state& state, Chain& chain)
   {
-    std::vector<vertex_descriptor> scar = ball(state.touched, 1);
+    std::vector<vertex_descriptor> scar = ball(state.touched, 3);
+    std::sort(scar.begin(), scar.end(), [this](vertex_descriptor x, vertex_descriptor y)
+    {
+      const Point& p = get(vpm, x);
+      const Point& q = get(vpm, y);
+      if(p.x() != q.x()) return p.x() < q.x();
+      if(p.y() != q.y()) return p.y() < q.y();
+      return p.z() < q.z();
+    });
     std::vector<Point> saved;
     saved.reserve(scar.size());
     for(vertex_descriptor v : scar) saved.push_back(get(vpm, v));
-    if(settings.smooth) smoother.smooth(scar, settings.smoothing_iterations);
-    const std::pair<std::size_t, double> after = quality(scar);
+    if(settings.smooth) smoother.smooth(scar, 3 * settings.smoothing_iterations);
+    const std::pair<std::size_t, double> after = quality(ball(state.touched, 4));
     if(after.first <= state.inverted_before &&
        after.second >= (std::min)(state.min_quality_before, settings.quality_floor))
     {
@@ -332,7 +354,7 @@ private:
     std::vector<Candidate> cands = candidates(a, plan_np);
     bool stale = false;
     std::size_t tried = 0;
-    for(std::size_t i = 0; tried < settings.width; ++i)
+    for(std::size_t i = 0; tried < settings.width && executions < budget_end; ++i)
     {
       if(stale)
       {
@@ -350,7 +372,9 @@ private:
       const std::vector<vertex_descriptor> near_path = ball(c.plan.path, 3);
       const std::unordered_set<vertex_descriptor, Vertex_hash> endangered(near_path.begin(), near_path.end());
       near_paths.insert(near_path.begin(), near_path.end());
-      const std::pair<std::size_t, double> before = quality(ball(c.plan.path, 2));
+      // the quality before the chain (later steps would see the unsmoothed quads of the earlier ones)
+      const std::pair<std::size_t, double> before =
+        depth == settings.max_depth ? quality(ball(c.plan.path, 4)) : std::make_pair(state.inverted_before, state.min_quality_before);
       const Path_state saved_state = state;
       std::vector<vertex_descriptor> alive;
       for(vertex_descriptor v : state.touched) if(endangered.count(v) == 0) alive.push_back(v);
@@ -363,8 +387,8 @@ private:
       state.touched = alive;
       state.touched.insert(state.touched.end(), r.touched_vertices.begin(), r.touched_vertices.end());
       state.face_change += long(r.number_of_splits) - long(r.number_of_collapses);
-      state.inverted_before = (std::max)(state.inverted_before, before.first);
-      state.min_quality_before = (std::min)(state.min_quality_before, before.second);
+      state.inverted_before = before.first;
+      state.min_quality_before = before.second;
 
       bool found = false;
       if(r.reverse_status == Reverse_qzip_status::SINGULARITIES_CANCELLED)
@@ -377,6 +401,7 @@ private:
       if(found)
       {
         chain.plans.push_back(c.plan);
+        chain.predicted_cancellations.push_back(c.predicted_cancellations);
         return true;
       }
       undo_qzip(history);
@@ -393,7 +418,7 @@ private:
   FaceIsConstrainedMap fcm;
   Smoother& smoother;
   Settings settings;
-  std::size_t executions = 0, undos = 0;
+  std::size_t executions = 0, undos = 0, budget_end = 0;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_paths;
 };
 
