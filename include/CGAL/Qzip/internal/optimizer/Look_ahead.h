@@ -297,11 +297,11 @@ private:
   // smooths the scar of the chain and checks it as a batch checks a surgery (no more inverted quads,
   // none worse than both the worst one before and the quality floor); restores the positions if not.
   // The touched vertices of the earlier Q-zips that a later one came near are not known any more: they
-  // lie within three edges of its path, so the scar reaches three edges around the known ones and the
-  // check four.
+  // lie within three edges of its path, so the scar (smoothed and checked) reaches four edges around the
+  // known ones.
   bool passes_quality_guard(const Path_state& state, Chain& chain)
   {
-    std::vector<vertex_descriptor> scar = ball(state.touched, 3);
+    std::vector<vertex_descriptor> scar = ball(state.touched, 4);
     std::sort(scar.begin(), scar.end(), [this](vertex_descriptor x, vertex_descriptor y)
     {
       const Point& p = get(vpm, x);
@@ -314,7 +314,7 @@ private:
     saved.reserve(scar.size());
     for(vertex_descriptor v : scar) saved.push_back(get(vpm, v));
     if(settings.smooth) smoother.smooth(scar, 3 * settings.smoothing_iterations);
-    const std::pair<std::size_t, double> after = quality(ball(state.touched, 4));
+    const std::pair<std::size_t, double> after = quality(scar);
     if(after.first <= state.inverted_before &&
        after.second >= (std::min)(state.min_quality_before, settings.quality_floor))
     {
