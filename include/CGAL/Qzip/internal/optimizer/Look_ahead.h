@@ -35,10 +35,10 @@ namespace internal {
 // it moves both, as a pair, and no landing is on a third singularity. They cancel when one of them, `a`,
 // lands on the other one, `b`: a Q-zip of `a` with a partner `c` beyond `b`, along a path through `b`,
 // moves `a` one edge towards `b`, onto it when they are neighbours (and a path passing a singularity may
-// cancel it as well). `cancel(a)` searches, depth first, for a short chain of such Q-zips (and of Q-zips
-// of the pair `a`, `b` itself, which bring both closer) that ends with a cancellation: each step must
-// bring `a` closer to its closest singularity of the opposite sign. The chain found is smoothed and kept
-// if it passes the quality guard of the batches; every other chain tried is undone exactly.
+// cancel it as well). `cancel(a)` searches, depth first, for a short chain of such Q-zips (tried first,
+// the shortest first; then Q-zips of the pair `a`, `b` itself) that ends with a cancellation: each step
+// must bring `a` closer to its closest singularity of the opposite sign. The first chain found that
+// passes the quality guard of the batches, after smoothing, is kept; every other one is undone exactly.
 // Works on the mesh as it is (its own searches, no scoring context).
 template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap,
           typename FaceIsConstrainedMap, typename Smoother>
@@ -55,8 +55,8 @@ class Look_ahead
 public:
   struct Settings
   {
-    int max_distance = 4;      // `a` and `b` at most this many edges apart
-    int max_depth = 3;         // Q-zips in a chain
+    int max_distance = 6;      // `a` and `b` at most this many edges apart
+    int max_depth = 6;         // Q-zips in a chain
     std::size_t width = 8;     // Q-zips executed per step of the search
     std::size_t budget = 400;  // Q-zips executed per search, at most
     std::size_t partners = 5;  // singularities beyond `b` tried as partner
@@ -71,7 +71,7 @@ public:
     std::vector<Plan> plans;             // its Q-zips, in the order of execution
     std::vector<int> predicted_cancellations; // for each, the cancellations its landings predicted
     std::vector<vertex_descriptor> scar; // the vertices smoothed around it (alive)
-    long face_change = 0;                // number of faces after minus before
+    long face_change = 0;                // its splits minus its collapses
   };
 
   Look_ahead(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
@@ -116,8 +116,8 @@ public:
   }
 
 private:
-  // the state of the chain being tried: the touched vertices of its Q-zips that are still alive, and the
-  // quality of the quads near the paths before each Q-zip
+  // the state of the chain being tried: the touched vertices of its Q-zips known to be alive, its splits
+  // minus its collapses, and the quality of the quads near the path of its first Q-zip before it
   struct Path_state
   {
     std::vector<vertex_descriptor> touched;
