@@ -105,6 +105,12 @@ public:
     if(d < 0) return false;
     Qzip_history<PolygonMesh, VertexPointMap> history(pm, vpm);
     Path_state state;
+    // the region of the chain: its Q-zips run within 2 max_distance edges of `a` and remove vertices
+    // within three edges of their paths
+    state.region = ball(std::vector<vertex_descriptor>(1, a), 2 * settings.max_distance + 6);
+    const std::pair<std::size_t, double> before = quality(state.region);
+    state.inverted_before = before.first;
+    state.min_quality_before = before.second;
     budget_end = executions + settings.budget;
     const bool kept = search(a, d, settings.max_depth, history, keeps_face_count, state, chain);
     if(kept)
@@ -117,9 +123,10 @@ public:
 
 private:
   // the state of the chain being tried: the touched vertices of its Q-zips known to be alive, its splits
-  // minus its collapses, and the quality of the quads near the path of its first Q-zip before it
+  // minus its collapses, and the region around it (vertices before it) with the quality of its quads
   struct Path_state
   {
+    std::vector<vertex_descriptor> region;
     std::vector<vertex_descriptor> touched;
     long face_change = 0;
     std::size_t inverted_before = 0;
@@ -297,8 +304,9 @@ private:
   // smooths the scar of the chain and checks it as a batch checks a surgery (no more inverted quads,
   // none worse than both the worst one before and the quality floor); restores the positions if not.
   // The touched vertices of the earlier Q-zips that a later one came near are not known any more: they
-  // lie within three edges of its path, so the scar (smoothed and checked) reaches four edges around the
-  // known ones.
+  // lie within three edges of its path, so the scar (smoothed) reaches four edges around the known ones,
+  // and the check covers, in addition, four edges around the vertices of the chain's region that no
+  // Q-zip came near (alive).
   bool passes_quality_guard(const Path_state& state, Chain& chain)
   {
     std::vector<vertex_descriptor> scar = ball(state.touched, 4);
@@ -314,7 +322,9 @@ private:
     saved.reserve(scar.size());
     for(vertex_descriptor v : scar) saved.push_back(get(vpm, v));
     if(settings.smooth) smoother.smooth(scar, 3 * settings.smoothing_iterations);
-    const std::pair<std::size_t, double> after = quality(scar);
+    std::vector<vertex_descriptor> checked = state.touched;
+    for(vertex_descriptor v : state.region) if(near_paths.count(v) == 0) checked.push_back(v);
+    const std::pair<std::size_t, double> after = quality(ball(checked, 4));
     if(after.first <= state.inverted_before &&
        after.second >= (std::min)(state.min_quality_before, settings.quality_floor))
     {
@@ -372,9 +382,6 @@ private:
       const std::vector<vertex_descriptor> near_path = ball(c.plan.path, 3);
       const std::unordered_set<vertex_descriptor, Vertex_hash> endangered(near_path.begin(), near_path.end());
       near_paths.insert(near_path.begin(), near_path.end());
-      // the quality before the chain (later steps would see the unsmoothed quads of the earlier ones)
-      const std::pair<std::size_t, double> before =
-        depth == settings.max_depth ? quality(ball(c.plan.path, 4)) : std::make_pair(state.inverted_before, state.min_quality_before);
       const Path_state saved_state = state;
       std::vector<vertex_descriptor> alive;
       for(vertex_descriptor v : state.touched) if(endangered.count(v) == 0) alive.push_back(v);
@@ -387,8 +394,6 @@ private:
       state.touched = alive;
       state.touched.insert(state.touched.end(), r.touched_vertices.begin(), r.touched_vertices.end());
       state.face_change += long(r.number_of_splits) - long(r.number_of_collapses);
-      state.inverted_before = before.first;
-      state.min_quality_before = before.second;
 
       bool found = false;
       if(r.reverse_status == Reverse_qzip_status::SINGULARITIES_CANCELLED)
