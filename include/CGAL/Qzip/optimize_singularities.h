@@ -141,6 +141,12 @@ Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valen
                           those that lower the number of singularities near their path (see the user manual)}
     \cgalParamDefault{`true`}
   \cgalParamNEnd
+  \cgalParamNBegin{do_look_ahead}
+    \cgalParamDescription{(Qzip) whether the end game also tries chains of Q-zips that bring a singularity onto
+                          one of the opposite sign up to six edges away, keeping only chains that cancel them and
+                          pass the quality guard (see the user manual)}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
   \cgalParamNBegin{number_of_relaxation_steps}
     \cgalParamDescription{the number of smoothing sweeps after each surgery and after each batch}
     \cgalParamDefault{5}
@@ -201,6 +207,7 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
   internal::Optimizer_settings settings;
   settings.smooth = choose_parameter(get_parameter(np, Qzip::internal_np::smoothing), true);
   settings.end_game = choose_parameter(get_parameter(np, Qzip::internal_np::end_game), true);
+  settings.look_ahead = choose_parameter(get_parameter(np, Qzip::internal_np::look_ahead), true);
   settings.smoothing_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 5);
   settings.face_count_tolerance = choose_parameter(get_parameter(np, Qzip::internal_np::face_count_tolerance), 0.1);
   settings.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);

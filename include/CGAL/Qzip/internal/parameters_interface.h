@@ -14,5 +14,6 @@ CGAL_QZIP_add_named_parameter(scoring_functor_t, scoring_functor, scoring_functo
 CGAL_QZIP_add_named_parameter(stop_predicate_t, stop_predicate, stop_predicate)
 CGAL_QZIP_add_named_parameter(smoothing_t, smoothing, do_smooth)
 CGAL_QZIP_add_named_parameter(end_game_t, end_game, do_end_game)
+CGAL_QZIP_add_named_parameter(look_ahead_t, look_ahead, do_look_ahead)
 CGAL_QZIP_add_named_parameter(face_count_tolerance_t, face_count_tolerance, face_count_tolerance)
 CGAL_QZIP_add_named_parameter(chain_simulation_t, chain_simulation, simulate_chain)

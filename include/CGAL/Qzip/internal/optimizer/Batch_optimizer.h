@@ -18,6 +18,7 @@
 #include <CGAL/Qzip/Scoring/Qzip_candidate.h>
 #include <CGAL/Qzip/Scoring/Scoring_context.h>
 #include <CGAL/Qzip/internal/vertex_defect.h>
+#include <CGAL/Qzip/internal/optimizer/Look_ahead.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
@@ -58,6 +59,9 @@ struct Optimizer_settings
   // a kept Q-zip is followed by more Q-zips of the same pair in the same batch while each end is more than
   // this many edges from the singularity of the opposite sign it is pulled towards (0: never, see follow())
   std::size_t follow_min_distance = 3;
+  bool look_ahead = true;       // chains of Q-zips that bring a singularity onto one of the opposite sign
+  int look_ahead_distance = 6;  // the two at most this many edges apart
+  int look_ahead_depth = 6;     // Q-zips in a chain
 };
 
 // The multiple-choice batches of the paper's Sec. 4.1 (see optimize_singularities()).
@@ -908,12 +912,80 @@ private:
   bool run_end_game()
   {
     const std::size_t initial = stats.number_of_singularities;
+    std::set<Point, bool(*)(const Point&, const Point&)> failed(&point_less);
     for(std::size_t round = 0; round < settings.max_end_game_rounds; ++round)
     {
-      if(run_batch(true) == 0) break;
+      const bool tried = run_batch(true) > 0;
+      const bool kept = settings.look_ahead && look_ahead_round(failed);
+      if(!tried && !kept) break;
     }
     best_pairing_distance = stats.pairing_distance;
     return stats.number_of_singularities < initial;
+  }
+
+  // one round of the look-ahead (see Look_ahead): each singularity that can start a Q-zip, in an order that
+  // does not depend on descriptors, tries to cancel with one of the opposite sign nearby by a chain of
+  // Q-zips, unless it failed before (`failed`, by position). The singularities that a chain tried before
+  // them in the pass came near (whose descriptors may be gone) wait for the next pass, after the context
+  // is refreshed. Returns whether it kept a chain.
+  bool look_ahead_round(std::set<Point, bool(*)(const Point&, const Point&)>& failed)
+  {
+    typedef Look_ahead<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap, Smoother> Chains;
+    typename Chains::Settings chain_settings;
+    chain_settings.max_distance = settings.look_ahead_distance;
+    chain_settings.max_depth = settings.look_ahead_depth;
+    chain_settings.smoothing_iterations = settings.smoothing_iterations;
+    chain_settings.quality_floor = settings.quality_floor;
+    chain_settings.smooth = settings.smooth;
+    const long f0 = long(stats.initial_number_of_faces);
+    auto keeps_face_count = [&](long change)
+    {
+      const long fnow = long(stats.number_of_faces), fafter = fnow + change;
+      return std::abs(double(fafter - f0)) <= settings.face_count_tolerance * double(f0) ||
+             std::abs(fafter - f0) < std::abs(fnow - f0);
+    };
+
+    bool kept = false;
+    for(bool waiting = true; waiting; )
+    {
+      waiting = false;
+      Chains chains(pm, vpm, ecm, fcm, smoother, chain_settings);
+      std::vector<vertex_descriptor> sources;
+      for(vertex_descriptor v : singular) if(is_endpoint(v)) sources.push_back(v);
+      sort_by_position(sources);
+      std::vector<Point> positions;
+      for(vertex_descriptor s : sources) positions.push_back(get(vpm, s));
+      for(std::size_t i = 0; i < sources.size(); ++i)
+      {
+        const vertex_descriptor s = sources[i];
+        if(failed.count(positions[i]) != 0) continue;
+        if(chains.was_near_a_path(s)) { waiting = true; continue; }
+        if(!chains.is_endpoint(s)) continue;
+        const std::size_t executions = chains.number_of_executions();
+        typename Chains::Chain chain;
+        if(!chains.cancel(s, keeps_face_count, chain))
+        {
+          if(chains.number_of_executions() > executions) failed.insert(positions[i]);
+          continue;
+        }
+        kept = true;
+        stats.number_of_faces = std::size_t(long(stats.number_of_faces) + chain.face_change);
+        stats.number_of_surgeries += chain.plans.size();
+        for(std::size_t k = 0; k < chain.plans.size(); ++k) // not scored: score 0
+          visitor.on_surgery(chain.plans[k], 0., -chain.predicted_cancellations[k]);
+        edited_vertices.insert(edited_vertices.end(), chain.scar.begin(), chain.scar.end());
+      }
+      stats.number_of_undone_surgeries += chains.number_of_undos();
+      if(chains.number_of_executions() > 0) // undone Q-zips may give new descriptors to re-created vertices
+      {
+        singular = ctx.begin_batch(edited_vertices);
+        stats.pairing_distance = pairing_distance();
+        stats.number_of_singularities = singular.size();
+        stats.number_of_faces = faces(pm).size();
+      }
+      edited_vertices.clear();
+    }
+    return kept;
   }
 };
 

@@ -1,0 +1,435 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_INTERNAL_OPTIMIZER_LOOK_AHEAD_H
+#define CGAL_QZIP_INTERNAL_OPTIMIZER_LOOK_AHEAD_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/Qzip/qzip.h>
+#include <CGAL/Qzip/quad_quality.h>
+#include <CGAL/Qzip/surgery_plan.h>
+#include <CGAL/Qzip/Scoring/Qzip_candidate.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <boost/functional/hash.hpp>
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Qzip {
+namespace internal {
+
+// The look-ahead of the end game. A v3 and a v5 a few edges apart do not cancel by a Q-zip of the two:
+// it moves both, as a pair, and no landing is on a third singularity. They cancel when one of them, `a`,
+// lands on the other one, `b`: a Q-zip of `a` with a partner `c` beyond `b`, along a path through `b`,
+// moves `a` one edge towards `b`, onto it when they are neighbours (and a path passing a singularity may
+// cancel it as well). `cancel(a)` searches, depth first, for a short chain of such Q-zips (tried first,
+// the shortest first; then Q-zips of the pair `a`, `b` itself) that ends with a cancellation: each step
+// must bring `a` closer to its closest singularity of the opposite sign. The first chain found that
+// passes the quality guard of the batches, after smoothing, is kept; every other one is undone exactly.
+// Works on the mesh as it is (its own searches, no scoring context).
+template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap,
+          typename FaceIsConstrainedMap, typename Smoother>
+class Look_ahead
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+  typedef boost::hash<vertex_descriptor> Vertex_hash;
+  typedef Surgery_plan<PolygonMesh> Plan;
+
+public:
+  struct Settings
+  {
+    int max_distance = 6;      // `a` and `b` at most this many edges apart
+    int max_depth = 6;         // Q-zips in a chain
+    std::size_t width = 8;     // Q-zips executed per step of the search
+    std::size_t budget = 400;  // Q-zips executed per search, at most
+    std::size_t partners = 5;  // singularities beyond `b` tried as partner
+    int smoothing_iterations = 5;
+    double quality_floor = 0.1;
+    bool smooth = true;
+  };
+
+  // what a kept chain did
+  struct Chain
+  {
+    std::vector<Plan> plans;             // its Q-zips, in the order of execution
+    std::vector<int> predicted_cancellations; // for each, the cancellations its landings predicted
+    std::vector<vertex_descriptor> scar; // the vertices smoothed around it (alive)
+    long face_change = 0;                // its splits minus its collapses
+  };
+
+  Look_ahead(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
+             Smoother& smoother, const Settings& settings)
+    : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm), smoother(smoother), settings(settings)
+  {}
+
+  // the number of Q-zips executed so far (kept or undone)
+  std::size_t number_of_executions() const { return executions; }
+  std::size_t number_of_undos() const { return undos; }
+  // whether `v` was within three edges of the path of a Q-zip executed so far, before it (a vertex
+  // that may have been removed, or re-created by an undo with a new descriptor)
+  bool was_near_a_path(vertex_descriptor v) const { return near_paths.count(v) != 0; }
+
+  // whether `v` can start or end a Q-zip: valence 3 or 5, no border or constrained edge, no protected face
+  bool is_endpoint(vertex_descriptor v) const
+  {
+    const int d = valence_if_passable(v);
+    return d == 3 || d == 5;
+  }
+
+  // Tries to cancel the singularity `a` (see `is_endpoint()`) with one of the opposite sign within
+  // `max_distance` edges. `keeps_face_count(change)` tells whether the chain may change the number of
+  // faces by `change`. Returns whether a chain was kept (described in `chain`); otherwise the mesh
+  // is as before (up to descriptors of re-created elements).
+  template <typename FaceBudget>
+  bool cancel(vertex_descriptor a, const FaceBudget& keeps_face_count, Chain& chain)
+  {
+    chain = Chain();
+    const int d = distance_to_opposite(a, (std::min)(settings.max_distance, settings.max_depth));
+    if(d < 0) return false;
+    Qzip_history<PolygonMesh, VertexPointMap> history(pm, vpm);
+    Path_state state;
+    // the region of the chain: its Q-zips run within 2 max_distance edges of `a` and remove vertices
+    // within three edges of their paths
+    state.region = ball(std::vector<vertex_descriptor>(1, a), 2 * settings.max_distance + 6);
+    const std::pair<std::size_t, double> before = quality(state.region);
+    state.inverted_before = before.first;
+    state.min_quality_before = before.second;
+    budget_end = executions + settings.budget;
+    const bool kept = search(a, d, settings.max_depth, history, keeps_face_count, state, chain);
+    if(kept)
+    {
+      std::reverse(chain.plans.begin(), chain.plans.end());
+      std::reverse(chain.predicted_cancellations.begin(), chain.predicted_cancellations.end());
+    }
+    return kept;
+  }
+
+private:
+  // the state of the chain being tried: the touched vertices of its Q-zips known to be alive, its splits
+  // minus its collapses, and the region around it (vertices before it) with the quality of its quads
+  struct Path_state
+  {
+    std::vector<vertex_descriptor> region;
+    std::vector<vertex_descriptor> touched;
+    long face_change = 0;
+    std::size_t inverted_before = 0;
+    double min_quality_before = 1;
+  };
+
+  struct Candidate
+  {
+    Plan plan;
+    int predicted_cancellations;
+    bool through_b; // not a Q-zip of the pair a, b itself
+  };
+
+  // the valence of v if v is passable (no border or constrained edge, no protected face around it), else -1
+  int valence_if_passable(vertex_descriptor v) const
+  {
+    int n = 0;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) return -1;
+      if(get(fcm, face(h, pm))) return -1;
+      ++n;
+    }
+    return n;
+  }
+
+  // breadth-first search from s through passable vertices, up to `radius` edges, avoiding `avoid`:
+  // the vertices reached in order, each with the one it was reached from
+  struct Search
+  {
+    std::vector<vertex_descriptor> order;
+    std::unordered_map<vertex_descriptor, vertex_descriptor, Vertex_hash> from;
+
+    std::vector<vertex_descriptor> path_to(vertex_descriptor t) const
+    {
+      std::vector<vertex_descriptor> path(1, t);
+      for(vertex_descriptor v = t; from.at(v) != v; v = from.at(v)) path.push_back(from.at(v));
+      std::reverse(path.begin(), path.end());
+      return path;
+    }
+  };
+
+  void search_from(vertex_descriptor s, int radius,
+                   const std::unordered_set<vertex_descriptor, Vertex_hash>& avoid, Search& out) const
+  {
+    out.order.assign(1, s);
+    out.from.clear();
+    out.from[s] = s;
+    std::vector<int> level(1, 0);
+    for(std::size_t i = 0; i < out.order.size(); ++i)
+    {
+      const vertex_descriptor v = out.order[i];
+      if(level[i] >= radius || (i > 0 && valence_if_passable(v) < 0)) continue;
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      {
+        const vertex_descriptor w = source(h, pm);
+        if(avoid.count(w) != 0 || !out.from.emplace(w, v).second) continue;
+        out.order.push_back(w);
+        level.push_back(level[i] + 1);
+      }
+    }
+  }
+
+  // the graph distance from a to the closest endpoint singularity of the opposite sign, if at most
+  // `radius`, else -1
+  int distance_to_opposite(vertex_descriptor a, int radius) const
+  {
+    const int da = valence_if_passable(a) - 4;
+    Search s;
+    search_from(a, radius, {}, s);
+    for(vertex_descriptor v : s.order)
+    {
+      const int dv = valence_if_passable(v);
+      if(v != a && (dv == 3 || dv == 5) && (dv - 4) * da < 0) return int(s.path_to(v).size()) - 1;
+    }
+    return -1;
+  }
+
+  // the Q-zips of `a` towards its closest singularities of the opposite sign `b`: with `b` along the
+  // shortest path, and with the closest singularities beyond `b` along that path continued through `b`
+  template <typename NP>
+  std::vector<Candidate> candidates(vertex_descriptor a, const NP& plan_np) const
+  {
+    const int da = valence_if_passable(a) - 4;
+    Search sa;
+    search_from(a, settings.max_distance, {}, sa);
+    std::vector<std::vector<vertex_descriptor> > sketches; // and whether each goes through b
+    std::vector<bool> through_b;
+    std::size_t opposites = 0;
+    for(vertex_descriptor b : sa.order)
+    {
+      const int db = valence_if_passable(b);
+      if(b == a || !(db == 3 || db == 5) || (db - 4) * da >= 0) continue;
+      const std::vector<vertex_descriptor> to_b = sa.path_to(b);
+      sketches.push_back(to_b);
+      through_b.push_back(false);
+      std::unordered_set<vertex_descriptor, Vertex_hash> avoid(to_b.begin(), to_b.end() - 1);
+      Search sb;
+      search_from(b, settings.max_distance, avoid, sb);
+      std::size_t partners = 0;
+      for(vertex_descriptor c : sb.order)
+      {
+        if(c == b || !is_endpoint(c)) continue;
+        std::vector<vertex_descriptor> sketch = to_b;
+        const std::vector<vertex_descriptor> beyond = sb.path_to(c);
+        sketch.insert(sketch.end(), beyond.begin() + 1, beyond.end());
+        sketches.push_back(std::move(sketch));
+        through_b.push_back(true);
+        if(++partners == settings.partners) break;
+      }
+      if(++opposites == 2) break;
+    }
+
+    std::vector<Candidate> out;
+    for(std::size_t i = 0; i < sketches.size(); ++i)
+      for(int m = 0; m < 4; ++m)
+      {
+        Plan plan = plan_qzip(pm, sketches[i], Strip_operation(m), plan_np);
+        if(!plan.is_realizable()) continue;
+        vertex_descriptor ls, lt;
+        predict_landings(plan, pm, ls, lt);
+        int predicted = 0;
+        for(vertex_descriptor l : { ls, lt })
+        {
+          if(l == GT::null_vertex() || l == plan.source || l == plan.target) continue;
+          const int dl = valence_if_passable(l);
+          const int moved = (l == ls ? plan.source_valence : plan.target_valence) - 4;
+          if((dl == 3 || dl == 5) && (dl - 4) * moved < 0) predicted += 2;
+        }
+        out.push_back(Candidate{ std::move(plan), predicted, through_b[i] });
+      }
+    std::stable_sort(out.begin(), out.end(), [](const Candidate& x, const Candidate& y)
+    {
+      if(x.predicted_cancellations != y.predicted_cancellations)
+        return x.predicted_cancellations > y.predicted_cancellations;
+      if(x.through_b != y.through_b) return x.through_b;
+      return x.plan.path.size() < y.plan.path.size(); // the shortest Q-zips distort the least
+    });
+    return out;
+  }
+
+  // the vertices within `radius` edges of `seeds`
+  std::vector<vertex_descriptor> ball(const std::vector<vertex_descriptor>& seeds, int radius) const
+  {
+    std::unordered_map<vertex_descriptor, int, Vertex_hash> level;
+    std::vector<vertex_descriptor> out;
+    for(vertex_descriptor v : seeds) if(level.emplace(v, 0).second) out.push_back(v);
+    for(std::size_t i = 0; i < out.size(); ++i)
+    {
+      const int l = level[out[i]];
+      if(l >= radius) continue;
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(out[i], pm), pm))
+        if(level.emplace(source(h, pm), l + 1).second) out.push_back(source(h, pm));
+    }
+    return out;
+  }
+
+  // the number of inverted quads incident to `region` and the smallest scaled Jacobian among them
+  std::pair<std::size_t, double> quality(const std::vector<vertex_descriptor>& region) const
+  {
+    std::unordered_set<face_descriptor, boost::hash<face_descriptor> > seen;
+    std::size_t n = 0;
+    double q = 1;
+    for(vertex_descriptor v : region)
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      {
+        if(is_border(h, pm) || !is_quad(h, pm) || !seen.insert(face(h, pm)).second) continue;
+        const double j = quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm));
+        if(j <= 0) ++n;
+        q = (std::min)(q, j);
+      }
+    return std::make_pair(n, q);
+  }
+
+  // smooths the scar of the chain and checks it as a batch checks a surgery (no more inverted quads,
+  // none worse than both the worst one before and the quality floor); restores the positions if not.
+  // The touched vertices of the earlier Q-zips that a later one came near are not known any more: they
+  // lie within three edges of its path, so the scar (smoothed) reaches four edges around the known ones,
+  // and the check covers, in addition, four edges around the vertices of the chain's region that no
+  // Q-zip came near (alive).
+  bool passes_quality_guard(const Path_state& state, Chain& chain)
+  {
+    std::vector<vertex_descriptor> scar = ball(state.touched, 4);
+    std::sort(scar.begin(), scar.end(), [this](vertex_descriptor x, vertex_descriptor y)
+    {
+      const Point& p = get(vpm, x);
+      const Point& q = get(vpm, y);
+      if(p.x() != q.x()) return p.x() < q.x();
+      if(p.y() != q.y()) return p.y() < q.y();
+      return p.z() < q.z();
+    });
+    std::vector<Point> saved;
+    saved.reserve(scar.size());
+    for(vertex_descriptor v : scar) saved.push_back(get(vpm, v));
+    if(settings.smooth) smoother.smooth(scar, 3 * settings.smoothing_iterations);
+    std::vector<vertex_descriptor> checked = state.touched;
+    for(vertex_descriptor v : state.region) if(near_paths.count(v) == 0) checked.push_back(v);
+    const std::pair<std::size_t, double> after = quality(ball(checked, 4));
+    if(after.first <= state.inverted_before &&
+       after.second >= (std::min)(state.min_quality_before, settings.quality_floor))
+    {
+      chain.scar = std::move(scar);
+      chain.face_change = state.face_change;
+      return true;
+    }
+    for(std::size_t i = 0; i < scar.size(); ++i) put(vpm, scar[i], saved[i]);
+    return false;
+  }
+
+  // the vertex at `p`, searched from the vertices of `around` that no Q-zip executed so far came near
+  // (they were never removed, so their descriptors are valid); `null_vertex()` if not found
+  vertex_descriptor relocate(const Point& p, const std::vector<vertex_descriptor>& around) const
+  {
+    for(vertex_descriptor v : around)
+    {
+      if(near_paths.count(v) != 0) continue;
+      for(vertex_descriptor w : ball(std::vector<vertex_descriptor>(1, v), 2 * settings.max_distance + 8))
+        if(get(vpm, w) == p) return w;
+      return GT::null_vertex();
+    }
+    return GT::null_vertex();
+  }
+
+  // one step of the depth-first search: a is `d` edges from its closest singularity of the opposite sign.
+  // The candidates are planned again after each Q-zip executed here (an undo or a rollback may give new
+  // descriptors to the vertices it re-creates, `a` among them: it is found again by its position).
+  template <typename FaceBudget>
+  bool search(vertex_descriptor a, int d, int depth, Qzip_history<PolygonMesh, VertexPointMap>& history,
+              const FaceBudget& keeps_face_count, Path_state& state, Chain& chain)
+  {
+    // planned without simulating the execution, as the optimizer's candidates (see Batch_optimizer::run_batch())
+    const auto plan_np = Qzip::parameters::simulate_chain(false, Qzip::parameters::face_is_constrained_map(fcm,
+                           CGAL::parameters::edge_is_constrained_map(ecm).vertex_point_map(vpm)));
+    const Point pa = get(vpm, a);
+    const std::vector<vertex_descriptor> around = ball(std::vector<vertex_descriptor>(1, a), settings.max_distance + 4);
+    std::vector<Candidate> cands = candidates(a, plan_np);
+    bool stale = false;
+    std::size_t tried = 0;
+    for(std::size_t i = 0; tried < settings.width && executions < budget_end; ++i)
+    {
+      if(stale)
+      {
+        a = relocate(pa, around);
+        if(a == GT::null_vertex()) return false;
+        cands = candidates(a, plan_np);
+        stale = false;
+      }
+      if(i >= cands.size()) break;
+      const Candidate& c = cands[i];
+      const long change = long(c.plan.number_of_splits()) - long(c.plan.number_of_collapses());
+      if(!keeps_face_count(state.face_change + change)) continue;
+      // a Q-zip only removes vertices within three edges of its path: the touched vertices of the
+      // earlier steps farther away stay alive
+      const std::vector<vertex_descriptor> near_path = ball(c.plan.path, 3);
+      const std::unordered_set<vertex_descriptor, Vertex_hash> endangered(near_path.begin(), near_path.end());
+      near_paths.insert(near_path.begin(), near_path.end());
+      const Path_state saved_state = state;
+      std::vector<vertex_descriptor> alive;
+      for(vertex_descriptor v : state.touched) if(endangered.count(v) == 0) alive.push_back(v);
+
+      Qzip_result<PolygonMesh> r = execute_qzip(pm, c.plan, history, plan_np);
+      ++executions;
+      stale = true;
+      if(!r.is_done()) { state.touched = alive; continue; }
+      ++tried;
+      state.touched = alive;
+      state.touched.insert(state.touched.end(), r.touched_vertices.begin(), r.touched_vertices.end());
+      state.face_change += long(r.number_of_splits) - long(r.number_of_collapses);
+
+      bool found = false;
+      if(r.reverse_status == Reverse_qzip_status::SINGULARITIES_CANCELLED)
+        found = passes_quality_guard(state, chain);
+      else if(depth > 1 && r.moved_source != GT::null_vertex())
+      {
+        const int d2 = distance_to_opposite(r.moved_source, (std::min)(d, depth) - 1);
+        found = d2 >= 0 && search(r.moved_source, d2, depth - 1, history, keeps_face_count, state, chain);
+      }
+      if(found)
+      {
+        chain.plans.push_back(c.plan);
+        chain.predicted_cancellations.push_back(c.predicted_cancellations);
+        return true;
+      }
+      undo_qzip(history);
+      ++undos;
+      state = saved_state;
+      state.touched = alive;
+    }
+    return false;
+  }
+
+  PolygonMesh& pm;
+  VertexPointMap vpm;
+  EdgeIsConstrainedMap ecm;
+  FaceIsConstrainedMap fcm;
+  Smoother& smoother;
+  Settings settings;
+  std::size_t executions = 0, undos = 0, budget_end = 0;
+  std::unordered_set<vertex_descriptor, Vertex_hash> near_paths;
+};
+
+} // namespace internal
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_INTERNAL_OPTIMIZER_LOOK_AHEAD_H
