@@ -202,37 +202,6 @@ static void print_row(const Row& r, bool measure)
             << " | " << r.stats.batch << " | " << fmt(r.seconds) << " |" << (measure ? " " + r.exact + " |" : "") << "\n";
 }
 
-// the closed surface of a 7 x 3 x 1 plate of voxels with three 1 x 1 holes: genus 3, all quads
-static void make_genus3_plate(Mesh& m)
-{
-  const int X = 7, Y = 3;
-  auto solid = [&](int x, int y) { return x >= 0 && y >= 0 && x < X && y < Y && !(y == 1 && (x == 1 || x == 3 || x == 5)); };
-  std::vector<Point> points;
-  std::map<std::array<int, 3>, std::size_t> ids;
-  std::vector<std::vector<std::size_t> > quads;
-  auto id = [&](int x, int y, int z)
-  {
-    const std::array<int, 3> k = {{ x, y, z }};
-    auto it = ids.find(k);
-    if(it != ids.end()) return it->second;
-    points.push_back(Point(x, y, z));
-    return ids[k] = points.size() - 1;
-  };
-  for(int x = 0; x < X; ++x)
-    for(int y = 0; y < Y; ++y)
-    {
-      if(!solid(x, y)) continue;
-      if(!solid(x + 1, y)) quads.push_back({ id(x + 1, y, 0), id(x + 1, y + 1, 0), id(x + 1, y + 1, 1), id(x + 1, y, 1) });
-      if(!solid(x - 1, y)) quads.push_back({ id(x, y, 0), id(x, y, 1), id(x, y + 1, 1), id(x, y + 1, 0) });
-      if(!solid(x, y + 1)) quads.push_back({ id(x, y + 1, 0), id(x, y + 1, 1), id(x + 1, y + 1, 1), id(x + 1, y + 1, 0) });
-      if(!solid(x, y - 1)) quads.push_back({ id(x, y, 0), id(x + 1, y, 0), id(x + 1, y, 1), id(x, y, 1) });
-      quads.push_back({ id(x, y, 1), id(x + 1, y, 1), id(x + 1, y + 1, 1), id(x, y + 1, 1) });
-      quads.push_back({ id(x, y, 0), id(x, y + 1, 0), id(x + 1, y + 1, 0), id(x + 1, y, 0) });
-    }
-  clear(m);
-  PMP::polygon_soup_to_polygon_mesh(points, quads, m);
-}
-
 int main(int argc, char** argv)
 {
   std::string corpus = QZIP_SHARED_DATA_DIR;
@@ -313,7 +282,7 @@ int main(int argc, char** argv)
     for(int levels = 1; levels <= 2; ++levels)
     {
       Mesh m;
-      make_genus3_plate(m);
+      make_genus3_voxel_plate(m);
       PMP::triangulate_faces(m);
       CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(levels));
       print_row(run("genus-3 plate, triangulated, CC" + std::to_string(levels), m, runs, false), false);

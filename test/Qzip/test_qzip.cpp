@@ -697,19 +697,7 @@ void make_grid_with_border_steps(Mesh& m, unsigned seed)
       Q::quad_collapse(h, m);
     }
   }
-  // unfold: every inside vertex at the centroid of its neighbours (the border is convex and fixed)
-  for(int iteration = 0; iteration < 300; ++iteration)
-    for(vertex_descriptor v : vertices(m))
-    {
-      if(on_border(v, m)) continue;
-      double x = 0, y = 0, n = 0;
-      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
-      {
-        const Point& p = get(CGAL::vertex_point, m, source(h, m));
-        x += p.x(); y += p.y(); n += 1;
-      }
-      put(get(CGAL::vertex_point, m), v, Point(x / n, y / n, 0));
-    }
+  relax_inside(m); // unfold (the border is convex and fixed)
 }
 
 /// every pair (interior singularity, border vertex with defect +1) at most `max_length` edges apart,

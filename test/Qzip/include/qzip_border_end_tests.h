@@ -184,24 +184,6 @@ Border_move_counters reverse_border_moves(const Mesh& m, std::size_t max_length,
   return c;
 }
 
-/// every inner vertex of the planar mesh `m` at the centroid of its neighbours (300 rounds; the border is fixed)
-template <typename Mesh>
-void relax_inside(Mesh& m)
-{
-  for(int iteration = 0; iteration < 300; ++iteration)
-    for(auto v : vertices(m))
-    {
-      if(on_border(v, m)) continue;
-      double x = 0, y = 0, n = 0;
-      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
-      {
-        const Point& p = get(CGAL::vertex_point, m, source(h, m));
-        x += p.x(); y += p.y(); n += 1;
-      }
-      put(get(CGAL::vertex_point, m), v, Point(x / n, y / n, 0));
-    }
-}
-
 /// An L-shaped grid: the unit squares of [0, nx] x [0, ny] but those of [cx, nx] x [cy, ny], with a
 /// concave corner at (cx, cy), and chains of collapses planted in it: each chain runs along a straight
 /// row or column from `chain[0]` (inside) to `chain[1]` (a border vertex) and collapses the quads on the

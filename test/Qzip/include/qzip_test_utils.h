@@ -11,10 +11,12 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <CGAL/Qzip/singularities.h>
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
@@ -120,6 +122,39 @@ void make_quad_torus(Mesh& m, int nx, int ny, double R = 3., double r = 1.)
     }
 }
 
+// the closed surface of a 7 x 3 x 1 plate of voxels with three 1 x 1 holes: genus 3, all quads (the paper's
+// robustness test, Fig. 17, starts from it: triangulated, then refined by Catmull-Clark)
+template <typename Mesh>
+void make_genus3_voxel_plate(Mesh& m)
+{
+  const int X = 7, Y = 3;
+  auto solid = [&](int x, int y) { return x >= 0 && y >= 0 && x < X && y < Y && !(y == 1 && (x == 1 || x == 3 || x == 5)); };
+  std::vector<Point> points;
+  std::map<std::array<int, 3>, std::size_t> ids;
+  std::vector<std::vector<std::size_t> > quads;
+  auto id = [&](int x, int y, int z)
+  {
+    const std::array<int, 3> k = {{ x, y, z }};
+    auto it = ids.find(k);
+    if(it != ids.end()) return it->second;
+    points.push_back(Point(x, y, z));
+    return ids[k] = points.size() - 1;
+  };
+  for(int x = 0; x < X; ++x)
+    for(int y = 0; y < Y; ++y)
+    {
+      if(!solid(x, y)) continue;
+      if(!solid(x + 1, y)) quads.push_back({ id(x + 1, y, 0), id(x + 1, y + 1, 0), id(x + 1, y + 1, 1), id(x + 1, y, 1) });
+      if(!solid(x - 1, y)) quads.push_back({ id(x, y, 0), id(x, y, 1), id(x, y + 1, 1), id(x, y + 1, 0) });
+      if(!solid(x, y + 1)) quads.push_back({ id(x, y + 1, 0), id(x, y + 1, 1), id(x + 1, y + 1, 1), id(x + 1, y + 1, 0) });
+      if(!solid(x, y - 1)) quads.push_back({ id(x, y, 0), id(x + 1, y, 0), id(x + 1, y, 1), id(x, y, 1) });
+      quads.push_back({ id(x, y, 1), id(x + 1, y, 1), id(x + 1, y + 1, 1), id(x, y + 1, 1) });
+      quads.push_back({ id(x, y, 0), id(x, y + 1, 0), id(x + 1, y + 1, 0), id(x + 1, y, 0) });
+    }
+  clear(m);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, quads, m);
+}
+
 template <typename Mesh>
 long euler_characteristic(const Mesh& m)
 {
@@ -143,6 +178,24 @@ bool on_border(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Me
 }
 
 /// valence histograms, interior and border, as a single map (border valences are stored as -valence).
+// every inner vertex of the planar mesh `m` at the centroid of its neighbours (300 rounds; the border is fixed)
+template <typename Mesh>
+void relax_inside(Mesh& m)
+{
+  for(int iteration = 0; iteration < 300; ++iteration)
+    for(auto v : vertices(m))
+    {
+      if(on_border(v, m)) continue;
+      double x = 0, y = 0, n = 0;
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+      {
+        const Point& p = get(CGAL::vertex_point, m, source(h, m));
+        x += p.x(); y += p.y(); n += 1;
+      }
+      put(get(CGAL::vertex_point, m), v, Point(x / n, y / n, 0));
+    }
+}
+
 template <typename Mesh>
 std::map<int, int> valence_histogram(const Mesh& m)
 {

@@ -12,6 +12,7 @@
 
 #include <CGAL/Qzip/qzip.h>
 #include <CGAL/Qzip/quad_quality.h>
+#include <CGAL/Qzip/internal/optimizer/region_quality.h>
 #include <CGAL/Qzip/smoothing.h>
 #include <CGAL/Qzip/stop_predicates.h>
 #include <CGAL/Qzip/Optimizer_visitor_base.h>
@@ -35,7 +36,6 @@
 #include <cstdlib>
 #include <limits>
 #include <set>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -237,24 +237,10 @@ private:
     return out;
   }
 
-  // the number of inverted quads (scaled Jacobian <= 0) incident to the vertices of `region`, and the
-  // smallest scaled Jacobian among these quads (1 if none)
+  // the number of inverted quads incident to `region` and the smallest scaled Jacobian among them
   std::pair<std::size_t, double> quality(const std::vector<vertex_descriptor>& region) const
   {
-    std::unordered_set<face_descriptor, boost::hash<face_descriptor> > seen;
-    std::size_t n = 0;
-    double q = 1;
-    for(vertex_descriptor v : region)
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-      {
-        if(is_border(h, pm) || !is_quad(h, pm)) continue;
-        const face_descriptor f = face(h, pm);
-        if(!seen.insert(f).second) continue;
-        const double j = quad_scaled_jacobian(f, pm, CGAL::parameters::vertex_point_map(vpm));
-        if(j <= 0) ++n;
-        q = (std::min)(q, j);
-      }
-    return std::make_pair(n, q);
+    return region_quality(region, pm, vpm);
   }
 
   // whether a singularity of the sign opposite to that of s lies within `radius` edges of s

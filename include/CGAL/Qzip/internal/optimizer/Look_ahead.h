@@ -12,6 +12,7 @@
 
 #include <CGAL/Qzip/qzip.h>
 #include <CGAL/Qzip/quad_quality.h>
+#include <CGAL/Qzip/internal/optimizer/region_quality.h>
 #include <CGAL/Qzip/surgery_plan.h>
 #include <CGAL/Qzip/Scoring/Qzip_candidate.h>
 
@@ -287,18 +288,7 @@ private:
   // the number of inverted quads incident to `region` and the smallest scaled Jacobian among them
   std::pair<std::size_t, double> quality(const std::vector<vertex_descriptor>& region) const
   {
-    std::unordered_set<face_descriptor, boost::hash<face_descriptor> > seen;
-    std::size_t n = 0;
-    double q = 1;
-    for(vertex_descriptor v : region)
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-      {
-        if(is_border(h, pm) || !is_quad(h, pm) || !seen.insert(face(h, pm)).second) continue;
-        const double j = quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm));
-        if(j <= 0) ++n;
-        q = (std::min)(q, j);
-      }
-    return std::make_pair(n, q);
+    return region_quality(region, pm, vpm);
   }
 
   // smooths the scar of the chain and checks it as a batch checks a surgery (no more inverted quads,

@@ -1,0 +1,61 @@
+// Copyright (c) 2026  CGAL Qzip contributors.
+// All rights reserved.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : CGAL Qzip contributors
+//
+#ifndef CGAL_QZIP_INTERNAL_OPTIMIZER_REGION_QUALITY_H
+#define CGAL_QZIP_INTERNAL_OPTIMIZER_REGION_QUALITY_H
+
+#include <CGAL/license/Qzip.h>
+
+#include <CGAL/Qzip/quad_quality.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <boost/functional/hash.hpp>
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Qzip {
+namespace internal {
+
+// The number of inverted quads (scaled Jacobian <= 0) incident to the vertices of `region`, and the
+// smallest scaled Jacobian among these quads (1 if none): what the optimizer's quality guard compares
+// before and after a surgery.
+template <typename PolygonMesh, typename VertexPointMap>
+std::pair<std::size_t, double>
+region_quality(const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& region,
+               const PolygonMesh& pm, const VertexPointMap& vpm)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
+  std::unordered_set<face_descriptor, boost::hash<face_descriptor> > seen;
+  std::size_t inverted = 0;
+  double worst = 1;
+  for(const auto v : region)
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      if(is_border(h, pm) || !is_quad(h, pm)) continue;
+      const face_descriptor f = face(h, pm);
+      if(!seen.insert(f).second) continue;
+      const double j = quad_scaled_jacobian(f, pm, CGAL::parameters::vertex_point_map(vpm));
+      if(j <= 0) ++inverted;
+      worst = (std::min)(worst, j);
+    }
+  return std::make_pair(inverted, worst);
+}
+
+} // namespace internal
+} // namespace Qzip
+} // namespace CGAL
+
+#endif // CGAL_QZIP_INTERNAL_OPTIMIZER_REGION_QUALITY_H
