@@ -75,7 +75,7 @@ public:
   typedef Nearby_singularity<PolygonMesh> Nearby;
 
   /// the number of closest singularities known at each vertex
-  static const std::size_t max_nearest_singularities = 6;
+  static constexpr std::size_t max_nearest_singularities = 6;
 
   /// what `nearest_singularities()` returns: a range of `Nearby_singularity` by increasing distance
   struct Neighborhood

@@ -42,7 +42,7 @@ class Reference_surface
   typedef CGAL::AABB_traits<GeomTraits, Primitive> Traits;
   typedef CGAL::AABB_tree<Traits> Tree;
 
-  static const int max_cells_per_query = 8;
+  static constexpr int max_cells_per_query = 8;
 
   std::vector<Triangle> triangles;
   std::vector<Bbox_3> boxes;

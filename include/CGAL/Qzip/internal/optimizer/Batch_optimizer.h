@@ -92,7 +92,7 @@ class Batch_optimizer
     std::vector<Scored> alternatives; // in a batch: the next best candidates of the source, tried if this one is skipped
     std::pair<std::size_t, std::size_t> partners{ no_partner, no_partner }; // see watch_partners()
   };
-  static const std::size_t no_partner = std::size_t(-1);
+  static constexpr std::size_t no_partner = std::size_t(-1);
   enum Outcome { KEPT, UNDONE, FAILED, SKIPPED };
 
   PolygonMesh& pm;
