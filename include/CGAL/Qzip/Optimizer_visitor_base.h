@@ -32,8 +32,10 @@ struct Default_optimizer_visitor
   void on_batch_scored(const Optimizer_statistics&, std::size_t /*number_of_chosen_candidates*/) {}
   /// called after each executed surgery that was kept, with its score change (negative: better) and the
   /// change in the number of singularities predicted from the plan (see `Qzip_candidate`; compare it with
-  /// a recount to measure the prediction; the Q-zips of the end game's look-ahead are not scored: 0). Some vertices of the plan may no longer exist: read only its
-  /// plain data (sizes, operations, status).
+  /// a recount to measure the prediction). The Q-zips that follow a pair within a batch report as score the
+  /// (negative) change of the summed distance of the pair to its partners; those of the end game's look-ahead
+  /// are not scored (0). Some vertices of the plan may no longer exist: read only its plain data (sizes,
+  /// operations, status).
   void on_surgery(const Surgery_plan<PolygonMesh>&, double /*score*/, int /*predicted_change*/) {}
   /// called after a surgery was executed and then undone because no valid quad shape was found.
   void on_undo(const Surgery_plan<PolygonMesh>&) {}
