@@ -12,7 +12,7 @@
 
 #include <CGAL/Qzip/qzip.h>
 #include <CGAL/Qzip/quad_quality.h>
-#include <CGAL/Qzip/internal/optimizer/region_quality.h>
+#include <CGAL/Qzip/internal/optimizer/regions.h>
 #include <CGAL/Qzip/smoothing.h>
 #include <CGAL/Qzip/stop_predicates.h>
 #include <CGAL/Qzip/Optimizer_visitor_base.h>
@@ -218,23 +218,12 @@ private:
   std::vector<vertex_descriptor> ball(const std::vector<vertex_descriptor>& seeds, int radius, std::vector<int>& level)
   {
     ++search_epoch;
-    std::vector<vertex_descriptor> out;
-    level.clear();
-    for(vertex_descriptor v : seeds)
-      if(get(search_stamp, v) != search_epoch) { put(search_stamp, v, search_epoch); out.push_back(v); level.push_back(0); }
-    for(std::size_t i = 0; i < out.size(); ++i)
+    return vertex_ball(seeds, radius, pm, level, [this](vertex_descriptor v)
     {
-      if(level[i] >= radius) continue;
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(out[i], pm), pm))
-      {
-        const vertex_descriptor w = source(h, pm);
-        if(get(search_stamp, w) == search_epoch) continue;
-        put(search_stamp, w, search_epoch);
-        out.push_back(w);
-        level.push_back(level[i] + 1);
-      }
-    }
-    return out;
+      if(get(search_stamp, v) == search_epoch) return false;
+      put(search_stamp, v, search_epoch);
+      return true;
+    });
   }
 
   // the number of inverted quads incident to `region` and the smallest scaled Jacobian among them

@@ -12,7 +12,7 @@
 
 #include <CGAL/Qzip/qzip.h>
 #include <CGAL/Qzip/quad_quality.h>
-#include <CGAL/Qzip/internal/optimizer/region_quality.h>
+#include <CGAL/Qzip/internal/optimizer/regions.h>
 #include <CGAL/Qzip/surgery_plan.h>
 #include <CGAL/Qzip/Scoring/Qzip_candidate.h>
 
@@ -272,17 +272,9 @@ private:
   // the vertices within `radius` edges of `seeds`
   std::vector<vertex_descriptor> ball(const std::vector<vertex_descriptor>& seeds, int radius) const
   {
-    std::unordered_map<vertex_descriptor, int, Vertex_hash> level;
-    std::vector<vertex_descriptor> out;
-    for(vertex_descriptor v : seeds) if(level.emplace(v, 0).second) out.push_back(v);
-    for(std::size_t i = 0; i < out.size(); ++i)
-    {
-      const int l = level[out[i]];
-      if(l >= radius) continue;
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(out[i], pm), pm))
-        if(level.emplace(source(h, pm), l + 1).second) out.push_back(source(h, pm));
-    }
-    return out;
+    std::unordered_set<vertex_descriptor, Vertex_hash> reached;
+    std::vector<int> level;
+    return vertex_ball(seeds, radius, pm, level, [&reached](vertex_descriptor v) { return reached.insert(v).second; });
   }
 
   // the number of inverted quads incident to `region` and the smallest scaled Jacobian among them

@@ -5,8 +5,8 @@
 //
 // Author(s)     : CGAL Qzip contributors
 //
-#ifndef CGAL_QZIP_INTERNAL_OPTIMIZER_REGION_QUALITY_H
-#define CGAL_QZIP_INTERNAL_OPTIMIZER_REGION_QUALITY_H
+#ifndef CGAL_QZIP_INTERNAL_OPTIMIZER_REGIONS_H
+#define CGAL_QZIP_INTERNAL_OPTIMIZER_REGIONS_H
 
 #include <CGAL/license/Qzip.h>
 
@@ -27,6 +27,33 @@
 namespace CGAL {
 namespace Qzip {
 namespace internal {
+
+// The vertices within `radius` edges of `seeds`, in breadth-first order (the seeds first, each once), and
+// in `level` the distance of each to the seeds. `mark(v)` marks `v` as reached and says whether it was
+// not reached before: the caller chooses the marks (a stamp property map, a hash set).
+template <typename PolygonMesh, typename Mark>
+std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>
+vertex_ball(const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& seeds, int radius,
+            const PolygonMesh& pm, std::vector<int>& level, Mark mark)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  std::vector<vertex_descriptor> out;
+  level.clear();
+  for(vertex_descriptor v : seeds)
+    if(mark(v)) { out.push_back(v); level.push_back(0); }
+  for(std::size_t i = 0; i < out.size(); ++i)
+  {
+    if(level[i] >= radius) continue;
+    for(const auto h : halfedges_around_target(halfedge(out[i], pm), pm))
+    {
+      const vertex_descriptor w = source(h, pm);
+      if(!mark(w)) continue;
+      out.push_back(w);
+      level.push_back(level[i] + 1);
+    }
+  }
+  return out;
+}
 
 // The number of inverted quads (scaled Jacobian <= 0) incident to the vertices of `region`, and the
 // smallest scaled Jacobian among these quads (1 if none): what the optimizer's quality guard compares
@@ -58,4 +85,4 @@ region_quality(const std::vector<typename boost::graph_traits<PolygonMesh>::vert
 } // namespace Qzip
 } // namespace CGAL
 
-#endif // CGAL_QZIP_INTERNAL_OPTIMIZER_REGION_QUALITY_H
+#endif // CGAL_QZIP_INTERNAL_OPTIMIZER_REGIONS_H
