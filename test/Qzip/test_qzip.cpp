@@ -429,6 +429,53 @@ void test_homotopy_on_mesh(const std::string& file, std::size_t pairs, unsigned 
   compare_homotopic_paths(m, file, pairs, seed, true, hc,
                           [&c](Mesh& w, const Q::Surgery_plan<Mesh>& plan) { check_predicted_failure(c, w, plan); });
 }
+/// U-turn arrivals at a v5, plan by plan: for pairs of singularities (`t` of valence 5) joined by a shortest
+/// path of at least two edges ending with x -> t, and each quad (x, t, u, n) beside the last edge whose corners
+/// n and u are regular and off the path, the sketch arriving by the U-turn x -> n -> u -> t is planned too.
+/// When the plan of the straight sketch goes around that quad at the end (E3: ... x -> n -> u), the plan of the
+/// U-turn must be the same plan (the end rule straightens the U-turn). Returns the number of such plans.
+template <typename Mesh>
+std::size_t test_u_turn_arrivals(const Mesh& m)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  const auto sing = singular_vertices(m);
+  std::size_t same = 0;
+  for(vertex_descriptor s : sing)
+    for(vertex_descriptor t : singularities_within(m, s, 2, 8))
+    {
+      if(valence(t, m) != 5) continue;
+      std::set<vertex_descriptor> others;
+      for(auto x : sing) if(x != s && x != t) others.insert(x);
+      const std::vector<vertex_descriptor> straight = bfs_path(m, s, t, others);
+      if(straight.size() < 3) continue;
+      const vertex_descriptor x = straight[straight.size() - 2];
+      const auto xt = halfedge(x, t, m).first;
+      for(auto h : { xt, opposite(xt, m) })
+      {
+        if(is_border(h, m) || degree(face(h, m), m) != 4) continue;
+        // face(x->t) = (x, t, u, n); face(t->x) = (t, x, n, u)
+        const vertex_descriptor c = target(next(h, m), m), d = target(next(next(h, m), m), m);
+        const vertex_descriptor u = h == xt ? c : d, n = h == xt ? d : c;
+        if(!is_regular_inside(n, m) || !is_regular_inside(u, m) ||
+           std::find(straight.begin(), straight.end(), n) != straight.end() ||
+           std::find(straight.begin(), straight.end(), u) != straight.end()) continue;
+        std::vector<vertex_descriptor> u_turn(straight.begin(), straight.end() - 1);
+        u_turn.insert(u_turn.end(), { n, u, t });
+        assert(ends_with_u_turn(u_turn, m));
+        for(int mo = 0; mo < 4; ++mo)
+        {
+          const auto p = Q::plan_qzip(m, straight, Q::Strip_operation(mo));
+          const std::size_t k = p.path.size();
+          if(k < 3 || p.path[k - 3] != x || p.path[k - 2] != n || p.path[k - 1] != u) continue;
+          const auto q = Q::plan_qzip(m, u_turn, Q::Strip_operation(mo));
+          assert(q.status == p.status && q.path == p.path && q.operations == p.operations);
+          ++same;
+        }
+      }
+    }
+  return same;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Random Q-zips on real meshes, with every result checked and everything undone at the end
 
@@ -1130,6 +1177,16 @@ int main(int argc, char** argv)
   assert(homotopy_real.isomorphic > 300 && homotopy_real.u_turn_isomorphic > 20);
   assert(homotopy_real.differing == 0);
   assert(homotopy_real.rolled_back == 0);
+  {
+    Surface_mesh grid, amo;
+    plant_chain(grid, 24, 11, 7, 5, true);
+    assert(read_mesh("data/polylap_amo_quad.off", amo));
+    Q::preprocess_valences(amo);
+    const std::size_t on_grid = test_u_turn_arrivals(grid), on_amo = test_u_turn_arrivals(amo);
+    std::cout << "  U-turn arrivals at a v5 planned as the straight arrival: " << on_grid << " plans (planted grid), "
+              << on_amo << " (polylap_amo_quad)" << std::endl;
+    assert(on_grid > 0 && on_amo > 0);
+  }
 
   test_refusals_and_parameters();
   std::cout << "  refusals, constraints, visitor and named parameters ok" << std::endl;
