@@ -429,6 +429,7 @@ void test_homotopy_on_mesh(const std::string& file, std::size_t pairs, unsigned 
   compare_homotopic_paths(m, file, pairs, seed, true, hc,
                           [&c](Mesh& w, const Q::Surgery_plan<Mesh>& plan) { check_predicted_failure(c, w, plan); });
 }
+
 /// U-turn arrivals at a v5, plan by plan: for pairs of singularities (`t` of valence 5) joined by a shortest
 /// path of at least two edges ending with x -> t, and each quad (x, t, u, n) beside the last edge whose corners
 /// n and u are regular and off the path, the sketch arriving by the U-turn x -> n -> u -> t is planned too.
