@@ -14,10 +14,17 @@
 // reversed, undone, invariant
 // violations, time, resident memory after the mesh and the peak resident memory of the process.
 //
-// Usage: stress_qzip [--count N] [--seed S] [--depth D] [--check-every K] [PATH...]
+// With --homotopy P, instead: homotopy invariance (qzip_test::compare_homotopic_paths(), as in test_qzip) on
+// P random pairs of singularities per mesh, each with a shortest path and a copy swept over one to six
+// regular quads, every motion on both, once with the sweeps kept away from the other singularities (the
+// faces around the swept quads hold none) and once without; reports the pairs of done Q-zips that are
+// isomorphic and those that are not (those arriving at a v5 by a U-turn around one quad apart).
+//
+// Usage: stress_qzip [--count N] [--seed S] [--depth D] [--check-every K] [--homotopy P] [PATH...]
 //   PATH: mesh files or directories (default: test/Qzip/data/bad/ and test/Qzip/data/); N defaults to 100000
 //   per mesh; full validity checks (CGAL::is_valid_polygon_mesh) run every K done Q-zips (default 1).
-// Exit code 1 if any violation was found.
+// Exit code 1 if any violation was found (with --homotopy: if a pair kept away from other singularities
+// gave different meshes).
 #include "../../examples/Qzip/qzip_example_io.h"
 #include "qzip_robustness_utils.h"
 #include "qzip_test_utils.h"
@@ -254,19 +261,66 @@ Stats stress(const std::string& file, long count, unsigned seed, std::size_t dep
   return st;
 }
 
+// the --homotopy run on one mesh: returns false when the mesh cannot be read
+bool homotopy(const std::string& file, std::size_t pairs, unsigned seed, qzip_test::Homotopy_counts& kept_away,
+              qzip_test::Homotopy_counts& anywhere)
+{
+  Mesh mesh;
+  std::string error;
+  if(!qzip_example::read_input_mesh(file, mesh, error, qzip_example::Accepted_faces::ANY_POLYGON)) return false;
+  Q::preprocess_valences(mesh);
+  mesh.collect_garbage();
+  auto nothing = [](Mesh&, const Q::Surgery_plan<Mesh>&) {};
+  qzip_test::compare_homotopic_paths(mesh, base_name(file), pairs, seed, true, kept_away, nothing);
+  qzip_test::compare_homotopic_paths(mesh, base_name(file), pairs, seed, false, anywhere, nothing);
+  return true;
+}
+
+int homotopy_run(const std::vector<std::string>& files, std::size_t pairs, unsigned seed)
+{
+  std::cout << "stress_qzip --homotopy: " << files.size() << " files, " << pairs << " pairs of singularities per mesh, seed "
+            << seed << "\n\n| mesh | sweeps | done | isomorphic | of which U-turn arrivals | different | of which U-turn arrivals |\n"
+            << "|---|---|---|---|---|---|---|" << std::endl;
+  qzip_test::Homotopy_counts total[2];
+  CGAL::Real_timer timer;
+  timer.start();
+  for(const std::string& f : files)
+  {
+    qzip_test::Homotopy_counts h[2];
+    if(!homotopy(f, pairs, seed++, h[0], h[1])) continue;
+    for(int k = 0; k < 2; ++k)
+    {
+      std::cout << "| " << base_name(f) << " | " << (k == 0 ? "kept away" : "anywhere") << " | " << h[k].done << " | "
+                << h[k].isomorphic << " | " << h[k].u_turn_isomorphic << " | " << h[k].differing << " | "
+                << h[k].u_turn_differing << " |" << std::endl;
+      total[k].done += h[k].done;
+      total[k].isomorphic += h[k].isomorphic;
+      total[k].u_turn_isomorphic += h[k].u_turn_isomorphic;
+      total[k].differing += h[k].differing;
+      total[k].u_turn_differing += h[k].u_turn_differing;
+    }
+  }
+  for(int k = 0; k < 2; ++k)
+    std::cout << "\n" << (k == 0 ? "kept away from other singularities" : "anywhere") << ": " << total[k].isomorphic
+              << " pairs isomorphic (" << total[k].u_turn_isomorphic << " U-turn arrivals), " << total[k].differing
+              << " different (" << total[k].u_turn_differing << " U-turn arrivals)";
+  std::cout << "; " << std::setprecision(1) << std::fixed << timer.time() << " s" << std::endl;
+  return total[0].differing == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-  const std::set<std::string> with_value = { "--count", "--seed", "--depth", "--check-every" };
+  const std::set<std::string> with_value = { "--count", "--seed", "--depth", "--check-every", "--homotopy" };
   const std::string bad = qzip_example::unknown_option(argc, argv, { "--help", "-h" }, with_value);
   if(!bad.empty() || qzip_example::has_flag(argc, argv, "--help") || qzip_example::has_flag(argc, argv, "-h"))
   {
     std::cerr << (bad.empty() ? "" : "error: unknown option '" + bad + "'; ")
-              << "usage: stress_qzip [--count N] [--seed S] [--depth D] [--check-every K] [PATH...]" << std::endl;
+              << "usage: stress_qzip [--count N] [--seed S] [--depth D] [--check-every K] [--homotopy P] [PATH...]" << std::endl;
     return bad.empty() ? EXIT_SUCCESS : EXIT_FAILURE;
   }
-  long count = 100000, check_every = 1;
+  long count = 100000, check_every = 1, homotopy_pairs = 0;
   unsigned long seed = 1, depth = 16;
   try
   {
@@ -274,15 +328,16 @@ int main(int argc, char** argv)
     seed = std::stoul(qzip_example::option_value(argc, argv, "--seed", "1"));
     depth = std::stoul(qzip_example::option_value(argc, argv, "--depth", "16"));
     check_every = std::stol(qzip_example::option_value(argc, argv, "--check-every", "1"));
+    homotopy_pairs = std::stol(qzip_example::option_value(argc, argv, "--homotopy", "0"));
   }
   catch(const std::exception&)
   {
     std::cerr << "error: option values must be integers" << std::endl;
     return EXIT_FAILURE;
   }
-  if(count < 0 || depth < 1 || check_every < 1)
+  if(count < 0 || depth < 1 || check_every < 1 || homotopy_pairs < 0)
   {
-    std::cerr << "error: --count must be >= 0, --depth and --check-every >= 1" << std::endl;
+    std::cerr << "error: --count and --homotopy must be >= 0, --depth and --check-every >= 1" << std::endl;
     return EXIT_FAILURE;
   }
 
@@ -302,6 +357,8 @@ int main(int argc, char** argv)
     if(f.empty()) { std::cerr << "error: no mesh file at '" << p << "'" << std::endl; return EXIT_FAILURE; }
     files.insert(files.end(), f.begin(), f.end());
   }
+
+  if(homotopy_pairs > 0) return homotopy_run(files, std::size_t(homotopy_pairs), unsigned(seed));
 
   std::cout << "stress_qzip: " << files.size() << " files, " << count << " random Q-zips per mesh, seed " << seed << ", unwind depth " << depth
             << ", validity check every " << check_every << " done Q-zip(s)\n\n"

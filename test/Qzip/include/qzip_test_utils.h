@@ -13,16 +13,21 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
+#include <CGAL/Qzip/qzip.h>
 #include <CGAL/Qzip/singularities.h>
+#include <CGAL/Random.h>
 
 #include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
 #include <cstdlib>
+#include <deque>
 #include <fstream>
+#include <initializer_list>
 #include <iostream>
 #include <map>
+#include <set>
 #include <string>
 #include <sys/stat.h>
 #include <unordered_map>
@@ -470,6 +475,218 @@ public:
     return after != codes;
   }
 };
+
+// ---------------------------------------------------------------------------------------------
+// Homotopic surgery paths (test_qzip's homotopy test on real meshes, stress_qzip --homotopy)
+
+/// a path from `a` to `b` with the fewest edges, through interior vertices not in `forbidden` (empty if none)
+template <typename Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>
+bfs_path(const Mesh& m, typename boost::graph_traits<Mesh>::vertex_descriptor a,
+         typename boost::graph_traits<Mesh>::vertex_descriptor b,
+         const std::set<typename boost::graph_traits<Mesh>::vertex_descriptor>& forbidden)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::map<vertex_descriptor, vertex_descriptor> pred;
+  std::deque<vertex_descriptor> queue(1, a);
+  pred[a] = a;
+  while(!queue.empty())
+  {
+    const vertex_descriptor v = queue.front(); queue.pop_front();
+    if(v == b) break;
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+    {
+      const vertex_descriptor u = source(h, m);
+      if(pred.count(u) || forbidden.count(u) || on_border(u, m)) continue;
+      pred[u] = v;
+      queue.push_back(u);
+    }
+  }
+  std::vector<vertex_descriptor> path;
+  if(!pred.count(b)) return path;
+  for(vertex_descriptor v = b; v != a; v = pred[v]) path.push_back(v);
+  path.push_back(a);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+/// an interior vertex of valence 4 whose faces are all quads: a path may sweep over it
+template <typename Mesh>
+bool is_regular_inside(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& m)
+{
+  if(on_border(v, m) || valence(v, m) != 4) return false;
+  for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+    if(degree(face(h, m), m) != 4) return false;
+  return true;
+}
+
+/// whether every vertex of the faces around `v` is `a`, `b` or an interior vertex of valence 4 (and `v` is
+/// not on the border)
+template <typename Mesh>
+bool only_regular_faces_around(typename boost::graph_traits<Mesh>::vertex_descriptor v,
+                               typename boost::graph_traits<Mesh>::vertex_descriptor a,
+                               typename boost::graph_traits<Mesh>::vertex_descriptor b, const Mesh& m)
+{
+  for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+  {
+    if(is_border(h, m)) return false;
+    for(auto g : CGAL::halfedges_around_face(h, m))
+    {
+      const auto w = target(g, m);
+      if(w != a && w != b && (on_border(w, m) || valence(w, m) != 4)) return false;
+    }
+  }
+  return true;
+}
+
+/// One elementary homotopy of the vertex path `path` over a single quad whose corners off the path are
+/// regular (so that no singularity enters, leaves or crosses the path): either a corner cut (three
+/// consecutive path vertices a, b, c are corners of one quad a, b, c, d: b, regular, is replaced by d) or an
+/// edge push (a path edge a -> b is replaced by the three other sides a -> d -> c -> b of a quad on one of its
+/// sides). The first edge of the path is kept (the motion is a tag relative to it). With `keep_away`, the
+/// faces around the corners of the swept quad hold no singularity but the ends of the path either (the
+/// chain operates on the faces around the path, and a singularity there takes part in it). Returns false
+/// when the random try found no such move.
+template <typename Mesh>
+bool sweep_one_quad(std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& path, const Mesh& m,
+                    CGAL::Random& rng, bool keep_away)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  const std::set<vertex_descriptor> on_path(path.begin(), path.end());
+  auto free_regular = [&](vertex_descriptor v) { return on_path.count(v) == 0 && is_regular_inside(v, m); };
+  auto away = [&](std::initializer_list<vertex_descriptor> corners)
+  {
+    if(!keep_away) return true;
+    for(vertex_descriptor v : corners)
+      if(!only_regular_faces_around(v, path.front(), path.back(), m)) return false;
+    return true;
+  };
+  for(int attempt = 0; attempt < 20; ++attempt)
+  {
+    const std::size_t i = std::size_t(rng.get_int(1, int(path.size()) - 1)); // edge path[i] -> path[i+1]
+    const std::pair<halfedge_descriptor, bool> ab = halfedge(path[i], path[i + 1], m);
+    if(!ab.second) continue;
+    const bool left = rng.get_bool();
+    if(rng.get_bool() && i >= 2) // corner cut at b = path[i]: the quad holds path[i-1] -> path[i] -> path[i+1]
+    {
+      const halfedge_descriptor in = halfedge(path[i - 1], path[i], m).first;
+      halfedge_descriptor corner;
+      if(!is_border(in, m) && next(in, m) == ab.first) corner = next(ab.first, m);
+      else if(!is_border(opposite(ab.first, m), m) && next(opposite(ab.first, m), m) == opposite(in, m))
+        corner = prev(opposite(ab.first, m), m);
+      else continue;
+      if(is_border(corner, m) || degree(face(corner, m), m) != 4) continue;
+      const vertex_descriptor d = target(corner, m);
+      if(!is_regular_inside(path[i], m) || !free_regular(d) || !away({ path[i - 1], path[i], path[i + 1], d })) continue;
+      path[i] = d;
+      return true;
+    }
+    const halfedge_descriptor h = left ? ab.first : opposite(ab.first, m); // the quad beside the edge
+    if(is_border(h, m) || degree(face(h, m), m) != 4) continue;
+    // around the quad of h: h goes a -> b (left) or b -> a (right); c after b and d after c, going on
+    const vertex_descriptor x = target(next(h, m), m), y = target(next(next(h, m), m), m);
+    if(!free_regular(x) || !free_regular(y) || !away({ path[i], path[i + 1], x, y })) continue;
+    // left: a -> b -> x -> y -> a, so a -> y -> x -> b; right: b -> a -> x -> y -> b, so a -> x -> y -> b
+    const std::vector<vertex_descriptor> detour = left ? std::vector<vertex_descriptor>{ y, x }
+                                                       : std::vector<vertex_descriptor>{ x, y };
+    path.insert(path.begin() + std::ptrdiff_t(i) + 1, detour.begin(), detour.end());
+    return true;
+  }
+  return false;
+}
+
+/// whether the path arrives at its last vertex by a U-turn around one quad: its last four vertices are the
+/// corners of one face
+template <typename Mesh>
+bool ends_with_u_turn(const std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>& path, const Mesh& m)
+{
+  const std::size_t n = path.size();
+  if(n < 4) return false;
+  const auto xt = halfedge(path[n - 4], path[n - 1], m);
+  if(!xt.second) return false;
+  for(auto h : { xt.first, opposite(xt.first, m) })
+  {
+    if(is_border(h, m) || degree(face(h, m), m) != 4) continue;
+    const auto c = target(next(h, m), m), d = target(next(next(h, m), m), m);
+    if((c == path[n - 2] && d == path[n - 3]) || (c == path[n - 3] && d == path[n - 2])) return true;
+  }
+  return false;
+}
+
+/// what compare_homotopic_paths() counts: pairs of done Q-zips, all of them and those whose swept path
+/// arrives at a valence-5 target by a U-turn around one quad
+struct Homotopy_counts
+{
+  std::size_t done = 0, refused = 0, rolled_back = 0;
+  std::size_t isomorphic = 0, differing = 0, u_turn_isomorphic = 0, u_turn_differing = 0;
+};
+
+/// Homotopy invariance on the mesh `m`: for `pairs` random pairs of singularities 3 to 12 edges apart, a
+/// shortest path avoiding the other singularities and a copy of it swept over one to six quads
+/// (sweep_one_quad(), no singularity in the swept region), each motion is planned and executed on both
+/// paths (on copies of `m`; `check_plan(copy, plan)` is called on each plan before), and where both are
+/// done the results are compared. Each pair that is not isomorphic is printed.
+template <typename Mesh, typename CheckPlan>
+void compare_homotopic_paths(const Mesh& m, const std::string& name, std::size_t pairs, unsigned seed, bool keep_away,
+                             Homotopy_counts& hc, const CheckPlan& check_plan)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  CGAL::Random rng(seed);
+  std::vector<vertex_descriptor> sing;
+  for(auto v : vertices(m)) if(!on_border(v, m) && valence(v, m) != 4) sing.push_back(v);
+  if(sing.size() < 2) return;
+  for(std::size_t tried = 0, used = 0; used < pairs && tried < 20 * pairs; ++tried)
+  {
+    const vertex_descriptor s = sing[std::size_t(rng.get_int(0, int(sing.size())))];
+    const std::vector<vertex_descriptor> near = singularities_within(m, s, 3, 12);
+    if(near.empty()) continue;
+    const vertex_descriptor t = near[std::size_t(rng.get_int(0, int(near.size())))];
+    std::set<vertex_descriptor> others;
+    for(auto x : sing) if(x != s && x != t) others.insert(x);
+    const std::vector<vertex_descriptor> straight = bfs_path(m, s, t, others);
+    if(straight.size() < 3) continue;
+    std::vector<vertex_descriptor> swept = straight;
+    const int sweeps = rng.get_int(1, 7);
+    int applied = 0;
+    for(int k = 0; k < sweeps; ++k) if(sweep_one_quad(swept, m, rng, keep_away)) ++applied;
+    if(applied == 0) continue;
+    ++used;
+    const bool u_turn = valence(t, m) == 5 && ends_with_u_turn(swept, m);
+    for(int mo = 0; mo < 4; ++mo)
+    {
+      Mesh results[2];
+      bool done[2];
+      std::string operations[2];
+      const std::vector<vertex_descriptor>* paths[2] = { &straight, &swept };
+      for(int a = 0; a < 2; ++a)
+      {
+        auto v2v = copy_mesh_with_map(m, results[a]);
+        std::vector<vertex_descriptor> path;
+        for(auto v : *paths[a]) path.push_back(v2v[v]);
+        const auto plan = CGAL::Qzip::plan_qzip(results[a], path, CGAL::Qzip::Strip_operation(mo));
+        check_plan(results[a], plan);
+        done[a] = false;
+        if(!plan.is_realizable()) { ++hc.refused; continue; }
+        for(CGAL::Qzip::Strip_operation op : plan.operations) operations[a] += std::to_string(int(op));
+        done[a] = CGAL::Qzip::execute_qzip(results[a], plan).is_done();
+        ++(done[a] ? hc.done : hc.rolled_back);
+      }
+      if(!done[0] || !done[1]) continue;
+      if(are_isomorphic(results[0], results[1]))
+      {
+        ++hc.isomorphic;
+        if(u_turn) ++hc.u_turn_isomorphic;
+        continue;
+      }
+      ++hc.differing;
+      if(u_turn) ++hc.u_turn_differing;
+      std::cout << "    " << name << ": homotopic paths of " << straight.size() - 1 << " and " << swept.size() - 1
+                << " edges, motion " << mo << ", gave different meshes (operations " << operations[0] << " and "
+                << operations[1] << ")" << std::endl;
+    }
+  }
+}
 
 } // namespace qzip_test
 

@@ -93,6 +93,8 @@ public:
         vertex_descriptor x, nb;
         if(!side_quad_corners(ut, left, x, nb)) return Plan_status::BORDER_OR_CONSTRAINED;
         if(!is_usable(x) || !is_usable(nb)) return Plan_status::ENDPOINT_ADJUSTMENT;
+        if(n >= 4 && path[n - 3] == nb && path[n - 4] == x)
+          return prepare_end_without_u_turn(path, ops, start_compass, transport);
         path.back() = nb;
         path.push_back(x);
         ops[n - 2] = left ? Strip_operation::RIGHT_SPLIT : Strip_operation::LEFT_SPLIT;
@@ -103,6 +105,28 @@ public:
       default:
         return Plan_status::INVALID_PATH;
     }
+  }
+
+  // The sketch arrives at t around the quad G that E3 collapses, x -> nb -> u -> t: the continuation
+  // u -> nb -> x would walk back along the path, and the folds it makes would take t off the chain. The
+  // arrival x -> t over G is homotopic to it (G lies between them): the U-turn is replaced by that edge,
+  // the compass is transported to it, and the end is prepared again. When the compass cannot be carried
+  // to x -> t (x follows a no-operation and is not regular) the plan is refused.
+  template <typename TransportTurn>
+  Plan_status prepare_end_without_u_turn(Path& path, Operations& ops, Strip_operation start_compass,
+                                         const TransportTurn& transport) const
+  {
+    const std::size_t i = path.size() - 4; // path[i] = x
+    const vertex_descriptor x = path[i], nb = path[i + 1], t = path.back();
+    path.erase(path.begin() + long(i) + 1, path.begin() + long(i) + 3);
+    ops.erase(ops.begin() + long(i) + 1, ops.begin() + long(i) + 3);
+    if(i > 0 && ops[i - 1] != Strip_operation::NO_OPERATION)
+      ops[i] = transport(path[i - 1], x, t, ops[i - 1]);
+    else if(ops[i] != Strip_operation::NO_OPERATION && valence(x, pm) == 4 && is_usable(x))
+      ops[i] = rotate(ops[i], ccw_steps(out(x, nb), out(x, t), pm)); // the compass at x keeps its orientation
+    else
+      return Plan_status::ENDPOINT_ADJUSTMENT;
+    return prepare_end(path, ops, start_compass, transport);
   }
 
   // The border ends supported: a border vertex with one quad too many or too few, on a straight piece of
