@@ -258,6 +258,46 @@ bool check_predicted_failure(Counters& c, Mesh& m, Q::Surgery_plan<Mesh> plan, H
   return true;
 }
 
+/// The simulation of plan_qzip() keeps its buffers from plan to plan (the local copy, resized rather than
+/// cleared, its hash maps, the executor's log): its decisions may not depend on the plans made before.
+/// Plans between random singularities 1 to 24 edges apart (so that the copy grows and shrinks), with the
+/// four motions each, are made in one order, then again in the reverse order, and must be the same.
+template <typename Mesh>
+void test_simulation_history(const std::string& path, unsigned seed, std::size_t& compared, std::size_t& refused)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  Mesh m;
+  assert(read_mesh(path, m));
+  Q::preprocess_valences(m);
+  std::vector<vertex_descriptor> singular;
+  for(vertex_descriptor v : vertices(m))
+    if(!on_border(v, m) && valence(v, m) != 4) singular.push_back(v);
+  CGAL::Random rng(seed);
+  std::vector<std::vector<vertex_descriptor> > paths;
+  for(int attempt = 0; paths.size() < 60 && attempt < 1000; ++attempt)
+  {
+    const vertex_descriptor s = singular[std::size_t(rng.get_int(0, int(singular.size())))];
+    const int reach = rng.get_int(1, 25);
+    const std::vector<vertex_descriptor> candidates = singularities_within(m, s, reach / 2, reach);
+    if(candidates.empty()) continue;
+    const auto p = Q::shortest_surgery_path(m, s, candidates[std::size_t(rng.get_int(0, int(candidates.size())))]);
+    if(!p.empty()) paths.push_back(p);
+  }
+  assert(paths.size() == 60);
+  std::vector<Q::Surgery_plan<Mesh> > first;
+  for(const auto& p : paths)
+    for(int k = 0; k < 4; ++k) first.push_back(Q::plan_qzip(m, p, Q::Strip_operation(k)));
+  for(std::size_t i = first.size(); i-- > 0;)
+  {
+    const Q::Surgery_plan<Mesh> again = Q::plan_qzip(m, paths[i / 4], Q::Strip_operation(i % 4));
+    assert(again.status == first[i].status && again.predicted_failure == first[i].predicted_failure &&
+           again.predicted_failed_step == first[i].predicted_failed_step && again.path == first[i].path &&
+           again.operations == first[i].operations);
+    if(again.status == Q::Plan_status::EXECUTION_WOULD_FAIL) ++refused;
+    ++compared;
+  }
+}
+
 template <typename Mesh>
 void test_planted_pairs(Counters& c, std::size_t& longest)
 {
@@ -1216,6 +1256,13 @@ int main(int argc, char** argv)
   random_ph.print("random Q-zips on bundled meshes, Polyhedron_3");
   assert(random_sm.done > 0 && random_ph.done > 0);
   assert(random_sm.rolled_back == 0 && random_ph.rolled_back == 0);
+
+  std::size_t compared = 0, refused_by_simulation = 0;
+  test_simulation_history<Surface_mesh>("data/quadriflow_gargoyle.obj", 12, compared, refused_by_simulation);
+  test_simulation_history<Polyhedron>("data/polylap_amo_quad.off", 13, compared, refused_by_simulation);
+  std::cout << "  simulation buffers: " << compared << " plans made again in the reverse order gave the same plans ("
+            << refused_by_simulation << " refused by the simulation)" << std::endl;
+  assert(compared == 480 && refused_by_simulation > 0);
 
   const std::string dir = shared_corpus_dir("random Q-zips on the shared corpus");
   if(!dir.empty())

@@ -108,28 +108,15 @@ public:
     Qzip_result<PolygonMesh> r;
     r.status = plan.status;
     if(!plan.is_realizable()) return r;
-    for(const auto& vf : plan.expected_faces) ideal[vf.first] = vf.second; // a reverse plan's frozen numbers
     // the ends of a reverse plan may be created by the execution (Surgery_plan::created_vertices)
     const bool ends_exist = plan.source != GT::null_vertex() && plan.target != GT::null_vertex();
     const Point source_at = ends_exist ? get(log_vpm(), plan.source) : Point();
     const Point target_at = ends_exist ? get(log_vpm(), plan.target) : Point();
-    source_code = ends_exist ? singularity_code(plan.source) : 0;
-    target_code = ends_exist ? singularity_code(plan.target) : 0;
-    visitor.on_qzip_started(plan);
-    log.mark();
-    Execution_failure failure = Execution_failure::NONE;
-    path = &plan.path;
-    if(!plan.created_vertices.empty()) { named_path = plan.path; path = &named_path; }
-    if(!run_prelude(plan, failure) || !run_chain(plan, failure)) {}
-    else if(!clean_up()) failure = Execution_failure::CLEANUP_IMPOSSIBLE;
-    else if(!valences_preserved()) failure = Execution_failure::SINGULARITY_CREATED;
-    if(failure != Execution_failure::NONE)
+    r.failure = apply(plan);
+    if(r.failure != Execution_failure::NONE)
     {
-      r.failure = failure;
       r.failed_step = failed_step;
-      log.rollback_to_mark();
       r.status = Plan_status::EXECUTION_FAILED;
-      visitor.on_qzip_finished(plan, false);
       return r;
     }
     r.status = Plan_status::REALIZABLE;
@@ -141,9 +128,34 @@ public:
     for(face_descriptor f : face_order)
       if(new_faces.count(f) != 0 && listed.insert(f).second) r.scar_faces.push_back(f);
     if(ends_exist) locate_moved_pair(source_at, target_at, r);
-    visitor.on_qzip_finished(plan, true);
     return r;
   }
+
+  // executes a realizable plan and returns `NONE`, or rolls it back and returns why it failed (at path
+  // position `failed_position()`): what run() does, without describing the result (for a simulation, which
+  // only needs the decision)
+  Execution_failure apply(const Surgery_plan<PolygonMesh>& plan)
+  {
+    CGAL_precondition(plan.is_realizable());
+    for(const auto& vf : plan.expected_faces) ideal[vf.first] = vf.second; // a reverse plan's frozen numbers
+    const bool ends_exist = plan.source != GT::null_vertex() && plan.target != GT::null_vertex();
+    source_code = ends_exist ? singularity_code(plan.source) : 0;
+    target_code = ends_exist ? singularity_code(plan.target) : 0;
+    visitor.on_qzip_started(plan);
+    log.mark();
+    Execution_failure failure = Execution_failure::NONE;
+    path = &plan.path;
+    if(!plan.created_vertices.empty()) { named_path = plan.path; path = &named_path; }
+    if(!run_prelude(plan, failure) || !run_chain(plan, failure)) {}
+    else if(!clean_up()) failure = Execution_failure::CLEANUP_IMPOSSIBLE;
+    else if(!valences_preserved()) failure = Execution_failure::SINGULARITY_CREATED;
+    if(failure != Execution_failure::NONE) log.rollback_to_mark();
+    visitor.on_qzip_finished(plan, failure == Execution_failure::NONE);
+    return failure;
+  }
+
+  // after a failed apply(): the position in the path where the execution failed
+  std::size_t failed_position() const { return failed_step; }
 
   // after a done run: whether the surgery cancelled singularities (interior valences or border defects)
   bool cancelled_singularities() const { return cancelled; }

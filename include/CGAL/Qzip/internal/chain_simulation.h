@@ -88,18 +88,21 @@ struct Simulated_execution
 // twice the radius when one is not (the chain merged vertices from farther away towards the path); past
 // `maximal_radius` the simulation gives up and leaves the plan to the executor. The watcher does not see
 // the operation whose check fails (the executor tells no visitor of it): a failure is only believed when a
-// copy with twice the radius fails at the same step for the same reason. The first radius, 3, leaves a
-// margin of one ring over what the chain and its clean-up reach in the tests, where the watcher never
-// asks for a second copy (with a radius of 2, it does for 0.6% of the plans of test_qzip and 2.6% of those
-// of benchmark_qzip, and with a radius of 1 and no watcher some plans refused by the simulation succeed
-// when forced). test_qzip
-// forces every plan refused by the simulation through the executor, where it fails at the same step for
-// the same reason, and no plan accepted by the simulation is rolled back.
+// copy with twice the radius fails at the same step for the same reason. The watcher, not the radius,
+// makes the simulation exact; the radius only decides how often a copy is made again. The first radius,
+// 2, is the smallest at which the collapses along the path (whose quads have their corners at most one
+// edge from it) have complete neighbours; the watcher asks for a second copy for a few plans in a hundred
+// (2.3% of those of benchmark_qzip). A radius of 3 never needed one in the tests but makes the copy 40%
+// larger; with a radius of 1 and no watcher, some plans refused by the simulation succeed when forced.
+// test_qzip forces every plan refused by the simulation through the executor, where it fails at the same
+// step for the same reason, and no plan accepted by the simulation is rolled back.
 //
 // The copy is a Surface_mesh built array by array (no face insertion), mirroring the input: the same
 // first incoming halfedge at each complete vertex, so that the executor's clean-up, which turns around a
 // vertex from there, makes the same choices on the copy. An object is meant to be reused from plan to
-// plan: its buffers (hash maps included, see Descriptor_hash_map) stay allocated.
+// plan: its buffers stay allocated (the hash maps, see Descriptor_hash_map; the arrays of the copy, which
+// is resized rather than cleared; the executor's operation log), so that a simulation allocates little
+// besides what the executor allocates.
 template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap, typename FaceIsConstrainedMap>
 class Chain_simulation
 {
@@ -118,7 +121,7 @@ class Chain_simulation
   typedef Local_constraint_map<EdgeIsConstrainedMap, Local_edge, Local_mesh> Local_ecm;
   typedef Local_constraint_map<FaceIsConstrainedMap, Local_face, Local_mesh> Local_fcm;
 
-  static constexpr int first_radius = 3;
+  static constexpr int first_radius = 2;
   static constexpr int maximal_radius = 24;
 
   // the copy, made again for every plan and radius
@@ -138,6 +141,7 @@ class Chain_simulation
   std::vector<halfedge_descriptor> outside;  // copied halfedges whose face may not be copied (border of the copy)
   std::vector<bool> complete;                // by local vertex index (later vertices are made by splits)
   Surgery_plan<Local_mesh> local_plan;
+  Operation_log<Local_mesh, Local_point_map> log; // the executor's, kept for its buffers
 
   // Checks, before each operation the executor applies to the copy, that its vertices and their
   // neighbours are complete (see above).
@@ -171,7 +175,14 @@ class Chain_simulation
   void copy_neighbourhood(const std::vector<vertex_descriptor>& path, int radius, const PolygonMesh& pm,
                           const VertexPointMap& vpm, const EdgeIsConstrainedMap& ecm, const FaceIsConstrainedMap& fcm)
   {
-    local.clear_without_removing_property_maps();
+    // The copy is not cleared (Surface_mesh::clear_without_removing_property_maps() frees the arrays, and
+    // allocating them again is a good part of the cost between plans) but resized below, and every value
+    // is written again; the elements the last execution removed are first taken back (add_vertex() and
+    // the like reuse removed elements and reset their properties), and the last constraints are lifted.
+    while(local.number_of_removed_vertices() != 0) local.add_vertex();
+    while(local.number_of_removed_edges() != 0) local.add_edge();
+    while(local.number_of_removed_faces() != 0) local.add_face();
+    for(Local_edge e : constrained_edges) put(ecm_local, e, false);
     depth.clear(); vertex_copy.clear(); halfedge_copy.clear(); face_copy.clear();
     inner.clear(); faces_to_copy.clear(); outside.clear(); vertices_to_copy.clear(); corners.clear();
     face_begin.clear(); constrained_edges.clear();
@@ -227,7 +238,7 @@ class Chain_simulation
         local.set_face(lh, lf);
         local.set_next(lh, corners[j + 1 == end ? begin : j + 1].first);
       }
-      if constexpr(Local_fcm::copied) if(get(fcm, faces_to_copy[k])) put(fcm_local, lf, true);
+      if constexpr(Local_fcm::copied) put(fcm_local, lf, get(fcm, faces_to_copy[k]));
     }
     for(Local_edge e : constrained_edges) put(ecm_local, e, true);
     // the border of the copy: the real border, and the cut. Its cycles turn around each vertex through
@@ -268,24 +279,25 @@ class Chain_simulation
     local_plan.path.clear();
     for(vertex_descriptor v : plan.path) local_plan.path.push_back(*vertex_copy.find(v));
 
-    Local_point_map points = local.points();
-    Operation_log<Local_mesh, Local_point_map> log(local, points);
+    log.clear(); // the copy was made again
     Cut_watcher watcher(complete);
     const auto np = Qzip::parameters::face_is_constrained_map(fcm_local,
-                      CGAL::parameters::vertex_point_map(points).edge_is_constrained_map(ecm_local).visitor(std::ref(watcher)));
+                      CGAL::parameters::vertex_point_map(local.points()).edge_is_constrained_map(ecm_local).visitor(std::ref(watcher)));
     Chain_executor<Local_mesh, Local_point_map, std::decay_t<decltype(np)> > executor(local, log, np);
-    const Qzip_result<Local_mesh> r = executor.run(local_plan);
-    reached_cut = watcher.reached_cut;
     Simulated_execution s;
-    s.failure = r.failure;
-    s.failed_step = r.failed_step;
+    s.failure = executor.apply(local_plan);
+    if(s.failure != Execution_failure::NONE) s.failed_step = executor.failed_position();
+    reached_cut = watcher.reached_cut;
     return s;
   }
 
 public:
   Chain_simulation()
-    : ecm_local(Local_ecm::make(local, "e:qzip_constrained")), fcm_local(Local_fcm::make(local, "f:qzip_constrained"))
+    : ecm_local(Local_ecm::make(local, "e:qzip_constrained")), fcm_local(Local_fcm::make(local, "f:qzip_constrained")),
+      log(local, local.points())
   {}
+  Chain_simulation(const Chain_simulation&) = delete; // the log refers to the copy
+  Chain_simulation& operator=(const Chain_simulation&) = delete;
 
   // what the execution of `plan` (a forward plan: no prelude, no created vertex) on `pm` would do
   Simulated_execution run(const PolygonMesh& pm, const Surgery_plan<PolygonMesh>& plan, const VertexPointMap& vpm,

@@ -73,6 +73,8 @@ public:
   void mark() { entries.mark(); }
   // forgets the last mark, keeping its operations in the previous group
   void drop_mark() { entries.drop_mark(); }
+  // forgets every operation without undoing it, for a log reused on a mesh rebuilt since
+  void clear() { entries.clear(); halfedge_ids.clear(); vertex_ids.clear(); }
 
   // collapses face(h), keeping target(h), and puts the kept vertex at the midpoint of the two merged ones
   // (a border vertex stays where it is; a kept vertex that takes the border from the removed one takes its

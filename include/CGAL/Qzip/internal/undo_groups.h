@@ -36,6 +36,8 @@ public:
   void mark() { marks.push_back(entries.size()); }
   // forgets the last mark, keeping its entries in the previous group
   void drop_mark() { CGAL_precondition(!marks.empty()); marks.pop_back(); }
+  // forgets every entry and mark without undoing them (keeps the buffers allocated)
+  void clear() { entries.clear(); marks.clear(); }
 
   // `undo(entry)` undoes one entry
   template <typename Undo>
