@@ -269,7 +269,7 @@ The mesh is not modified.
   \cgalParamNEnd
   \cgalParamNBegin{simulate_chain}
     \cgalParamDescription{whether a plan that passes the local checks is also simulated on a copy of the
-                          neighbourhood of its path. The simulation costs about three executions of the plan;
+                          neighbourhood of its path. The simulation costs about two executions of the plan;
                           without it, `plan_qzip()` costs about a microsecond, and a few plans it calls
                           realizable are rolled back by `execute_qzip()` (with new descriptors for the elements
                           the roll-back re-creates).}
