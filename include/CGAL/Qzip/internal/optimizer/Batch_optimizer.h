@@ -129,7 +129,7 @@ class Batch_optimizer
   std::vector<vertex_descriptor> edited_vertices; // the scars of the surgeries of the batch (see Scoring_context::begin_batch())
   std::size_t best_pairing_distance = 0; // the smallest pairing distance since the count last decreased
   std::set<Surgery_key> rejected; // end-game surgeries executed and undone, not to be tried again
-  std::set<Surgery_key> undone_in_batches; // the same in the batches (see reject())
+  std::set<Surgery_key> undone_in_batches; // the same in the batches since the count last dropped (see reject())
 
 public:
   Batch_optimizer(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
@@ -422,8 +422,9 @@ private:
   // execution
 
   // remembers a surgery that was executed and undone (or rolled back), by the positions of its ends and its
-  // motion: it is not chosen again in the batches (resp. in the end game) while its ends stay where they
-  // were, as it would be undone again
+  // motion: it would be undone again, and the source chooses its next best candidate instead while its ends
+  // stay where they were; in the end game for good, in the batches until a batch lowers the number of
+  // singularities (the mesh around may have changed enough for it to pass)
   void reject(const Surgery_key& k, bool end_game)
   {
     (end_game ? rejected : undone_in_batches).insert(k);
