@@ -66,15 +66,16 @@ candidates are sorted and the best half is executed serially, skipping any surge
 three edges of a path already operated on in this batch (a singularity whose best candidate is skipped
 tries its next ones instead). After each surgery its scar is smoothed (see `smooth_quad_mesh()`); if the
 surgery leaves more inverted quads (scaled Jacobian `<= 0`) near its path than there were, the smoothing
-and the surgery are undone exactly. A kept Q-zip moves its pair by about one edge; while each end of the
-pair is still more than three edges from the singularity of the opposite sign it is pulled towards (its
-closest one other than the pair, at the start of the batch, as `Pairing_term` sees it) and no surgery of
-the batch came near those, the pair is Q-zipped again along a shortest path between its new places, with
-the motion whose predicted landings are closest to them, under the same checks: far apart singularities
-travel several edges in one batch. After the batch the union of its scars is smoothed again. The stop predicate
-is asked before every batch (by default: at most 200 batches, and stop when 20 batches in a row neither
-lowered the number of singularities nor brought them closer to partners of the opposite sign, see
-`Default_stop_predicate`).
+and the surgery are undone exactly, and the same surgery (same positions of its ends, same motion) is not
+a candidate again until a batch lowers the number of singularities. A kept Q-zip moves its pair by about
+one edge; while each end of the pair is still more than three edges from the singularity of the opposite
+sign it is pulled towards (its closest one other than the pair, at the start of the batch, as
+`Pairing_term` sees it) and no surgery of the batch came near those, the pair is Q-zipped again along a
+shortest path between its new places, with the motion whose predicted landings are closest to them,
+under the same checks: far apart singularities travel several edges in one batch. After the batch the
+union of its scars is smoothed again. The stop predicate is asked before every batch (by default: at
+most 200 batches, and stop when 20 batches in a row neither lowered the number of singularities nor
+brought them closer to partners of the opposite sign, see `Default_stop_predicate`).
 
 When the stop predicate says stop, an end game follows: in rounds, every singularity that can start a
 Q-zip and has a singularity of the opposite sign within two edges (not a random half) tries all its

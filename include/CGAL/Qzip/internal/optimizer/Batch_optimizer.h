@@ -129,6 +129,7 @@ class Batch_optimizer
   std::vector<vertex_descriptor> edited_vertices; // the scars of the surgeries of the batch (see Scoring_context::begin_batch())
   std::size_t best_pairing_distance = 0; // the smallest pairing distance since the count last decreased
   std::set<Surgery_key> rejected; // end-game surgeries executed and undone, not to be tried again
+  std::set<Surgery_key> undone_in_batches; // the same in the batches since the count last dropped (see reject())
 
 public:
   Batch_optimizer(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
@@ -374,7 +375,7 @@ private:
     score_candidates(s, plan_np,
                      [&](const Qzip_candidate<PolygonMesh>& c, Surgery_plan<PolygonMesh>& plan, double score)
     {
-      if(score >= 0) return;
+      if(score >= 0 || undone_in_batches.count(key(plan)) != 0) return;
       Scored e;
       e.score = score;
       e.predicted_cancellations = c.predicted_cancellations;
@@ -419,6 +420,15 @@ private:
 
   // ---------------------------------------------------------------------------------------------
   // execution
+
+  // remembers a surgery that was executed and undone (or rolled back), by the positions of its ends and its
+  // motion: it would be undone again, and the source chooses its next best candidate instead while its ends
+  // stay where they were; in the end game for good, in the batches until a batch lowers the number of
+  // singularities (the mesh around may have changed enough for it to pass)
+  void reject(const Surgery_key& k, bool end_game)
+  {
+    (end_game ? rejected : undone_in_batches).insert(k);
+  }
 
   // marks the vertices of `region` not yet operated on in this batch as operated on by the current surgery
   void mark(const std::vector<vertex_descriptor>& region)
@@ -486,6 +496,7 @@ private:
                   std::pair<vertex_descriptor, vertex_descriptor>* moved = nullptr)
   {
     const Surgery_plan<PolygonMesh>& plan = cand.plan;
+    const Surgery_key surgery_key = require_decrease ? cand.key : key(plan); // before the ends move
     ++surgery_serial;
     if(!follows) first_of_pair = surgery_serial;
     // The region of the plan must not have been operated on in this batch. Only the path vertices are
@@ -556,7 +567,7 @@ private:
     {
       ++stats.number_of_failed_surgeries;
       mark_after_undo();
-      if(require_decrease) rejected.insert(cand.key);
+      reject(surgery_key, require_decrease);
       return FAILED;
     }
 
@@ -582,7 +593,7 @@ private:
       mark_after_undo();
       ++stats.number_of_undone_surgeries;
       visitor.on_undo(plan);
-      if(require_decrease) rejected.insert(cand.key);
+      reject(surgery_key, require_decrease);
       return UNDONE;
     }
     for(vertex_descriptor v : scar) put(scar_stamp, v, batch_epoch);
@@ -870,6 +881,7 @@ private:
       return executed;
     }
     stats.batches_without_improvement = singular.size() < before ? 0 : stats.batches_without_improvement + 1;
+    if(singular.size() < before) undone_in_batches.clear();
     if(singular.size() < before || stats.pairing_distance < best_pairing_distance)
     {
       best_pairing_distance = stats.pairing_distance;
