@@ -60,6 +60,7 @@ public:
     int max_depth = 6;         // Q-zips in a chain
     std::size_t width = 8;     // Q-zips executed per step of the search
     std::size_t budget = 400;  // Q-zips executed per search, at most
+    std::size_t judgements = 32; // chains smoothed and judged by the quality guard per search, at most
     std::size_t partners = 5;  // singularities beyond `b` tried as partner
     int partner_distance = 12; // at most this many edges beyond `b`
     int smoothing_iterations = 5;
@@ -117,6 +118,7 @@ public:
     state.inverted_before = before.first;
     state.min_quality_before = before.second;
     budget_end = executions + settings.budget;
+    judgement_end = judgements + settings.judgements;
     const bool kept = search(a, d, settings.max_depth, history, keeps_face_count, state, chain);
     if(kept)
     {
@@ -296,6 +298,7 @@ private:
   // vertex reached from them without passing one of them, and one edge around.
   bool passes_quality_guard(const Path_state& state, Chain& chain)
   {
+    ++judgements;
     std::unordered_set<vertex_descriptor, Vertex_hash> unchanged;
     for(vertex_descriptor v : state.region) if(near_chain.count(v) == 0) unchanged.insert(v);
     std::unordered_set<vertex_descriptor, Vertex_hash> reached;
@@ -379,7 +382,7 @@ private:
     std::vector<Candidate> cands = candidates(a, plan_np);
     bool stale = false;
     std::size_t tried = 0;
-    for(std::size_t i = 0; tried < settings.width && executions < budget_end; ++i)
+    for(std::size_t i = 0; tried < settings.width && executions < budget_end && judgements < judgement_end; ++i)
     {
       if(stale)
       {
@@ -439,7 +442,7 @@ private:
   FaceIsConstrainedMap fcm;
   Smoother& smoother;
   Settings settings;
-  std::size_t executions = 0, undos = 0, budget_end = 0;
+  std::size_t executions = 0, undos = 0, budget_end = 0, judgements = 0, judgement_end = 0;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_paths;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_chain; // the part of near_paths of the current search
   static constexpr int untangling_sweeps = 20;
