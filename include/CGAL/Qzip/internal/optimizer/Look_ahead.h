@@ -39,7 +39,8 @@ namespace internal {
 // cancel it as well). `cancel(a)` searches, depth first, for a short chain of such Q-zips (tried first,
 // the shortest first; then Q-zips of the pair `a`, `b` itself) that ends with a cancellation: each step
 // must bring `a` closer to its closest singularity of the opposite sign. The first chain found that
-// passes the quality guard of the batches, after smoothing, is kept; every other one is undone exactly.
+// passes the quality guard of the batches, after smoothing (and untangling, see passes_quality_guard()),
+// is kept; every other one is undone exactly.
 // Works on the mesh as it is (its own searches, no scoring context).
 template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap,
           typename FaceIsConstrainedMap, typename Smoother>
