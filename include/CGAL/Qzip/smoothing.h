@@ -260,6 +260,98 @@ public:
     }
     return accepted;
   }
+
+  // Untangling: at most `sweeps` Gauss-Seidel sweeps (until one moves nothing) over the free vertices of
+  // `region` that are not on a feature curve and have an incident quad below `floor` (scaled Jacobian). Each
+  // moves, if that raises the smallest scaled Jacobian of its quads without inverting one more of them, to
+  // the best of a few positions projected onto the surface: towards the point that would make one of its
+  // quads a parallelogram, towards the mean of these points, and steps in eight directions of its tangent
+  // plane. The smallest scaled Jacobian of the quads around `region` never decreases. Returns the number of
+  // moves.
+  std::size_t untangle(const std::vector<vertex_descriptor>& region, int sweeps, double floor)
+  {
+    typedef typename GeomTraits::Vector_3 Vector;
+    typedef typename GeomTraits::FT FT;
+    std::size_t moved = 0;
+    std::vector<Point> goals, trials;
+    for(int sweep = 0; sweep < sweeps; ++sweep)
+    {
+      std::size_t moved_in_sweep = 0;
+      for(vertex_descriptor v : region)
+      {
+        if(is_fixed(v) || feature_vertices.count(v) != 0) continue;
+        const std::pair<int, double> before = incident_quality(v);
+        if(before.second >= floor) continue;
+        const Point old = get(vpm, v);
+        // the parallelogram points (v = a + b - c in the quad (a, v, b, c)), their mean, the quads' normal
+        // and the mean edge length
+        goals.clear();
+        Vector mean = NULL_VECTOR, normal = NULL_VECTOR;
+        double length = 0;
+        int edges = 0;
+        for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+        {
+          length += std::sqrt(CGAL::to_double(CGAL::squared_distance(old, get(vpm, source(h, pm)))));
+          ++edges;
+          if(is_border(h, pm) || !is_quad(h, pm)) continue;
+          const Point& a = get(vpm, source(h, pm));
+          const Point& b = get(vpm, target(next(h, pm), pm));
+          const Point& c = get(vpm, source(prev(h, pm), pm));
+          goals.push_back(a + (b - c));
+          mean = mean + (goals.back() - old);
+          normal = normal + CGAL::cross_product(b - a, c - old);
+        }
+        if(goals.empty()) continue;
+        goals.push_back(old + mean / FT(goals.size()));
+        length /= edges;
+        trials.clear();
+        for(const Point& g : goals)
+          for(double t : { 1., 0.5, 0.25 }) trials.push_back(old + FT(t) * (g - old));
+        // steps of 0.3 and 0.1 mean edge lengths in eight directions of the tangent plane
+        const double nn = CGAL::to_double(normal * normal);
+        if(nn > 0)
+        {
+          Vector t1 = CGAL::cross_product(normal, Vector(1, 0, 0));
+          if(CGAL::to_double(t1 * t1) < 1e-6 * nn) t1 = CGAL::cross_product(normal, Vector(0, 1, 0));
+          Vector t2 = CGAL::cross_product(normal, t1);
+          t1 = t1 / FT(std::sqrt(CGAL::to_double(t1 * t1)));
+          t2 = t2 / FT(std::sqrt(CGAL::to_double(t2 * t2)));
+          for(double step : { 0.3, 0.1 })
+            for(int k = 0; k < 8; ++k)
+              trials.push_back(old + FT(step * length * std::cos(k * CGAL_PI / 4)) * t1
+                                   + FT(step * length * std::sin(k * CGAL_PI / 4)) * t2);
+        }
+        Point best = old;
+        std::pair<int, double> best_quality = before;
+        for(const Point& trial : trials)
+        {
+          const Point candidate = project(v, trial, old);
+          put(vpm, v, candidate);
+          const std::pair<int, double> q = incident_quality(v);
+          if(q.first <= best_quality.first && q.second > best_quality.second) { best = candidate; best_quality = q; }
+        }
+        put(vpm, v, best);
+        if(best != old) { ++moved; ++moved_in_sweep; }
+      }
+      if(moved_in_sweep == 0) break;
+    }
+    return moved;
+  }
+
+  // the number of inverted quads around v and the smallest scaled Jacobian among its quads (1 if none)
+  std::pair<int, double> incident_quality(vertex_descriptor v) const
+  {
+    int inverted = 0;
+    double m = 1;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      if(is_border(h, pm) || !is_quad(h, pm)) continue;
+      const double j = quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm));
+      if(j <= 0) ++inverted;
+      m = (std::min)(m, j);
+    }
+    return std::make_pair(inverted, m);
+  }
 };
 
 } // namespace internal

@@ -60,8 +60,8 @@ struct Optimizer_settings
   // this many edges from the singularity of the opposite sign it is pulled towards (0: never, see follow())
   std::size_t follow_min_distance = 3;
   bool look_ahead = true;       // chains of Q-zips that bring a singularity onto one of the opposite sign
-  int look_ahead_distance = 6;  // the two at most this many edges apart
-  int look_ahead_depth = 6;     // Q-zips in a chain
+  int look_ahead_distance = 14; // the two at most this many edges apart
+  int look_ahead_depth = 14;    // Q-zips in a chain
 };
 
 // The multiple-choice batches of the paper's Sec. 4.1 (see optimize_singularities()).

@@ -39,7 +39,8 @@ namespace internal {
 // cancel it as well). `cancel(a)` searches, depth first, for a short chain of such Q-zips (tried first,
 // the shortest first; then Q-zips of the pair `a`, `b` itself) that ends with a cancellation: each step
 // must bring `a` closer to its closest singularity of the opposite sign. The first chain found that
-// passes the quality guard of the batches, after smoothing, is kept; every other one is undone exactly.
+// passes the quality guard of the batches, after smoothing (and untangling, see passes_quality_guard()),
+// is kept; every other one is undone exactly.
 // Works on the mesh as it is (its own searches, no scoring context).
 template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap,
           typename FaceIsConstrainedMap, typename Smoother>
@@ -60,7 +61,9 @@ public:
     int max_depth = 6;         // Q-zips in a chain
     std::size_t width = 8;     // Q-zips executed per step of the search
     std::size_t budget = 400;  // Q-zips executed per search, at most
+    std::size_t judgements = 32; // chains smoothed and judged by the quality guard per search, at most
     std::size_t partners = 5;  // singularities beyond `b` tried as partner
+    int partner_distance = 12; // at most this many edges beyond `b`
     int smoothing_iterations = 5;
     double quality_floor = 0.1;
     bool smooth = true;
@@ -106,13 +109,17 @@ public:
     if(d < 0) return false;
     Qzip_history<PolygonMesh, VertexPointMap> history(pm, vpm);
     Path_state state;
-    // the region of the chain: its Q-zips run within 2 max_distance edges of `a` and remove vertices
-    // within three edges of their paths
-    state.region = ball(std::vector<vertex_descriptor>(1, a), 2 * settings.max_distance + 6);
+    {
+      std::unordered_set<vertex_descriptor, Vertex_hash> reached;
+      state.region = vertex_ball(std::vector<vertex_descriptor>(1, a), region_radius(), pm, state.region_level,
+                                 [&reached](vertex_descriptor v) { return reached.insert(v).second; });
+    }
+    near_chain.clear();
     const std::pair<std::size_t, double> before = quality(state.region);
     state.inverted_before = before.first;
     state.min_quality_before = before.second;
     budget_end = executions + settings.budget;
+    judgement_end = judgements + settings.judgements;
     const bool kept = search(a, d, settings.max_depth, history, keeps_face_count, state, chain);
     if(kept)
     {
@@ -128,6 +135,7 @@ private:
   struct Path_state
   {
     std::vector<vertex_descriptor> region;
+    std::vector<int> region_level;        // the distance of each vertex of `region` to `a`
     std::vector<vertex_descriptor> touched;
     long face_change = 0;
     std::size_t inverted_before = 0;
@@ -226,7 +234,7 @@ private:
       through_b.push_back(false);
       std::unordered_set<vertex_descriptor, Vertex_hash> avoid(to_b.begin(), to_b.end() - 1);
       Search sb;
-      search_from(b, settings.max_distance, avoid, sb);
+      search_from(b, settings.partner_distance, avoid, sb);
       std::size_t partners = 0;
       for(vertex_descriptor c : sb.order)
       {
@@ -283,15 +291,34 @@ private:
     return region_quality(region, pm, vpm);
   }
 
-  // smooths the scar of the chain and checks it as a batch checks a surgery (no more inverted quads,
-  // none worse than both the worst one before and the quality floor); restores the positions if not.
-  // The touched vertices of the earlier Q-zips that a later one came near are not known any more: they
-  // lie within three edges of its path, so the scar (smoothed) reaches four edges around the known ones,
-  // and the check covers, in addition, four edges around the vertices of the chain's region that no
-  // Q-zip came near (alive).
+  // smooths the scar of the chain and checks it as a batch checks a surgery (no more inverted quads in
+  // its region, none worse than both the worst one before and the quality floor); if the smoothed scar
+  // fails, untangles it (see Quad_smoother::untangle()) and checks again; restores the positions if not.
+  // The vertices of the region that no Q-zip of the search came near are alive and unchanged; the
+  // others (removed, re-created by an undo, created, or moved) are found from them: the scar is every
+  // vertex reached from them without passing one of them, and one edge around.
   bool passes_quality_guard(const Path_state& state, Chain& chain)
   {
-    std::vector<vertex_descriptor> scar = ball(state.touched, 4);
+    ++judgements;
+    std::unordered_set<vertex_descriptor, Vertex_hash> unchanged;
+    for(vertex_descriptor v : state.region) if(near_chain.count(v) == 0) unchanged.insert(v);
+    std::unordered_set<vertex_descriptor, Vertex_hash> reached;
+    std::vector<vertex_descriptor> changed;
+    for(vertex_descriptor v : state.touched) if(reached.insert(v).second) changed.push_back(v);
+    for(std::size_t i = 0; i < state.region.size(); ++i) // the region's outer shell is never changed
+      if(state.region_level[i] < region_radius() && unchanged.count(state.region[i]) != 0)
+        for(halfedge_descriptor h : halfedges_around_target(halfedge(state.region[i], pm), pm))
+        {
+          const vertex_descriptor w = source(h, pm);
+          if(unchanged.count(w) == 0 && reached.insert(w).second) changed.push_back(w);
+        }
+    for(std::size_t i = 0; i < changed.size(); ++i)
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(changed[i], pm), pm))
+      {
+        const vertex_descriptor w = source(h, pm);
+        if(unchanged.count(w) == 0 && reached.insert(w).second) changed.push_back(w);
+      }
+    std::vector<vertex_descriptor> scar = ball(changed, 1);
     std::sort(scar.begin(), scar.end(), [this](vertex_descriptor x, vertex_descriptor y)
     {
       const Point& p = get(vpm, x);
@@ -303,12 +330,16 @@ private:
     std::vector<Point> saved;
     saved.reserve(scar.size());
     for(vertex_descriptor v : scar) saved.push_back(get(vpm, v));
+    std::vector<vertex_descriptor> judged = changed;
+    judged.insert(judged.end(), unchanged.begin(), unchanged.end());
+    auto passes = [&]()
+    {
+      const std::pair<std::size_t, double> after = quality(judged);
+      return after.first <= state.inverted_before &&
+             after.second >= (std::min)(state.min_quality_before, settings.quality_floor);
+    };
     if(settings.smooth) smoother.smooth(scar, 3 * settings.smoothing_iterations);
-    std::vector<vertex_descriptor> checked = state.touched;
-    for(vertex_descriptor v : state.region) if(near_paths.count(v) == 0) checked.push_back(v);
-    const std::pair<std::size_t, double> after = quality(ball(checked, 4));
-    if(after.first <= state.inverted_before &&
-       after.second >= (std::min)(state.min_quality_before, settings.quality_floor))
+    if(passes() || (settings.smooth && smoother.untangle(scar, untangling_sweeps, settings.quality_floor) > 0 && passes()))
     {
       chain.scar = std::move(scar);
       chain.face_change = state.face_change;
@@ -317,6 +348,11 @@ private:
     for(std::size_t i = 0; i < scar.size(); ++i) put(vpm, scar[i], saved[i]);
     return false;
   }
+
+  // the region of a chain: its Q-zips run within 2 max_distance + partner_distance edges of `a` (`a` stays
+  // within max_distance of the singularity `b` it moves to, partners are at most partner_distance beyond
+  // `b`) and change vertices within three edges of their paths
+  int region_radius() const { return 2 * settings.max_distance + settings.partner_distance + 4; }
 
   // the vertex at `p`, searched from the vertices of `around` that no Q-zip executed so far came near
   // (they were never removed, so their descriptors are valid); `null_vertex()` if not found
@@ -347,7 +383,7 @@ private:
     std::vector<Candidate> cands = candidates(a, plan_np);
     bool stale = false;
     std::size_t tried = 0;
-    for(std::size_t i = 0; tried < settings.width && executions < budget_end; ++i)
+    for(std::size_t i = 0; tried < settings.width && executions < budget_end && judgements < judgement_end; ++i)
     {
       if(stale)
       {
@@ -365,6 +401,7 @@ private:
       const std::vector<vertex_descriptor> near_path = ball(c.plan.path, 3);
       const std::unordered_set<vertex_descriptor, Vertex_hash> endangered(near_path.begin(), near_path.end());
       near_paths.insert(near_path.begin(), near_path.end());
+      near_chain.insert(near_path.begin(), near_path.end());
       const Path_state saved_state = state;
       std::vector<vertex_descriptor> alive;
       for(vertex_descriptor v : state.touched) if(endangered.count(v) == 0) alive.push_back(v);
@@ -406,8 +443,10 @@ private:
   FaceIsConstrainedMap fcm;
   Smoother& smoother;
   Settings settings;
-  std::size_t executions = 0, undos = 0, budget_end = 0;
+  std::size_t executions = 0, undos = 0, budget_end = 0, judgements = 0, judgement_end = 0;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_paths;
+  std::unordered_set<vertex_descriptor, Vertex_hash> near_chain; // the part of near_paths of the current search
+  static constexpr int untangling_sweeps = 20;
 };
 
 } // namespace internal
