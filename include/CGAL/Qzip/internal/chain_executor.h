@@ -189,7 +189,7 @@ public:
   {
     std::vector<std::pair<vertex_descriptor, int> > out;
     for(vertex_descriptor v : live_vertices_in_order())
-      if(const Vertex_state& s = *vertex_states.find(v); s.has_ideal) out.emplace_back(v, s.ideal);
+      if(const Vertex_state& s = known(v); s.has_ideal) out.emplace_back(v, s.ideal);
     return out;
   }
 
@@ -206,8 +206,9 @@ private:
     cancelled = false;
   }
 
-  // the state of `v`, made blank when `v` has none (the reference lasts until the next call)
+  // the state of `v` or `f`, made blank when there is none (the reference lasts until the next insertion)
   Vertex_state& state(vertex_descriptor v) { return *vertex_states.insert(v, Vertex_state()).first; }
+  Face_state& face_state(face_descriptor f) { return *face_states.insert(f, Face_state()).first; }
   // the state of a vertex that has one
   const Vertex_state& known(vertex_descriptor v) const { return *vertex_states.find(v); }
 
@@ -253,8 +254,7 @@ private:
     if(constrained_around(a) || constrained_around(c)) return false;
     touch(a); touch(b); touch(c); touch(d);
     visitor.on_collapse(h, pm);
-    if(const Face_state* f = face_states.find(face(h, pm)); f != nullptr && f->scar)
-      face_states.insert(face(h, pm), Face_state()).first->scar = false;
+    face_state(face(h, pm)).scar = false;
     // a border c merged into an interior a (can_collapse_quad() refuses two border vertices): the merged
     // vertex takes the place of c on the border, with the number of quads c should have
     if(is_border_vertex(c, pm) && !is_border_vertex(a, pm))
@@ -297,7 +297,7 @@ private:
       s.ideal = n;
     }
     list(c);
-    Face_state& f = *face_states.insert(face(last_quad, pm), Face_state()).first;
+    Face_state& f = face_state(face(last_quad, pm));
     f.scar = true;
     if(!f.listed) { f.listed = true; face_order.push_back(face(last_quad, pm)); }
     ++splits;
