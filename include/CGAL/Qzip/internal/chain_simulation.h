@@ -24,7 +24,6 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <functional>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -64,6 +63,14 @@ struct Local_constraint_map<Static_boolean_property_map<InputKey, false>, LocalK
   static constexpr bool copied = false;
   static type make(LocalMesh&, const char*) { return type(); }
 };
+
+// The named parameters of the executor on the local copy.
+template <typename PointMap, typename EdgeIsConstrainedMap, typename FaceIsConstrainedMap, typename Visitor>
+auto local_executor_parameters(PointMap points, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm, Visitor& visitor)
+{
+  return Qzip::parameters::face_is_constrained_map(fcm, CGAL::parameters::vertex_point_map(points)
+                                                          .edge_is_constrained_map(ecm).visitor(std::ref(visitor)));
+}
 
 // The result of a simulated execution: the failure the execution of the plan would meet (`NONE` when
 // it would succeed) and the path position where it would.
@@ -168,10 +175,9 @@ class Chain_simulation
     }
   };
 
-  typedef decltype(Qzip::parameters::face_is_constrained_map(std::declval<typename Local_fcm::type>(),
-                     CGAL::parameters::vertex_point_map(std::declval<Local_point_map>())
-                       .edge_is_constrained_map(std::declval<typename Local_ecm::type>())
-                       .visitor(std::ref(std::declval<Cut_watcher&>())))) Executor_parameters;
+  typedef decltype(local_executor_parameters(std::declval<Local_point_map>(), std::declval<typename Local_ecm::type>(),
+                                             std::declval<typename Local_fcm::type>(), std::declval<Cut_watcher&>()))
+    Executor_parameters;
 
   // the executor, its operation log and its watcher, kept from plan to plan for their buffers
   Operation_log<Local_mesh, Local_point_map> log;
@@ -301,8 +307,7 @@ public:
   Chain_simulation()
     : ecm_local(Local_ecm::make(local, "e:qzip_constrained")), fcm_local(Local_fcm::make(local, "f:qzip_constrained")),
       log(local, local.points()), watcher(complete),
-      executor(local, log, Qzip::parameters::face_is_constrained_map(fcm_local,
-                 CGAL::parameters::vertex_point_map(local.points()).edge_is_constrained_map(ecm_local).visitor(std::ref(watcher))))
+      executor(local, log, local_executor_parameters(local.points(), ecm_local, fcm_local, watcher))
   {}
   Chain_simulation(const Chain_simulation&) = delete; // the log and the executor refer to the copy
   Chain_simulation& operator=(const Chain_simulation&) = delete;
