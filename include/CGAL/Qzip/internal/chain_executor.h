@@ -12,6 +12,7 @@
 
 #include <CGAL/Qzip/surgery_plan.h>
 #include <CGAL/Qzip/Qzip_visitor_base.h>
+#include <CGAL/Qzip/internal/descriptor_hash_map.h>
 #include <CGAL/Qzip/internal/operation_log.h>
 #include <CGAL/Qzip/internal/rotation.h>
 #include <CGAL/Qzip/internal/vertex_defect.h>
@@ -25,8 +26,6 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
-#include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 namespace CGAL {
@@ -47,6 +46,10 @@ namespace internal {
 //       the new quad is (v, w, c, y)); new guide w->c.
 //   RS: the same split; new guide w->v.
 //   NOOP: new guide w->v.
+//
+// An executor can run plan after plan (a simulation runs one on copy after copy): its bookkeeping is
+// reset at every run and keeps its buffers (Descriptor_hash_map), so that a run allocates little besides
+// the operation log's entries and the result.
 template <typename PolygonMesh, typename VertexPointMap, typename NamedParameters>
 class Chain_executor
 {
@@ -55,8 +58,6 @@ class Chain_executor
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
   typedef typename GT::edge_descriptor edge_descriptor;
   typedef typename GT::face_descriptor face_descriptor;
-  typedef boost::hash<vertex_descriptor> Vertex_hash;
-  typedef boost::hash<face_descriptor> Face_hash;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
 
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::edge_is_constrained_t, NamedParameters,
@@ -71,6 +72,24 @@ class Chain_executor
   // a touched vertex before the surgery: whether it was on the border, and its singularity code (see
   // singularity_code())
   struct Before { bool border; int code; };
+  // what the run knows of a vertex descriptor; a descriptor recycled by the mesh keeps what was known of
+  // the removed vertex (its state before the surgery is that vertex's)
+  struct Vertex_state
+  {
+    bool touched = false;      // `before` is known: the vertex existed before the surgery
+    Before before = { false, 0 };
+    bool has_ideal = false;    // `ideal` is known (see ideal_number_of_faces())
+    int ideal = 0;
+    bool alive = false;        // touched or created, and not removed since
+    bool created = false;      // made by a split of this run
+    bool took_border = false;  // an interior vertex merged with a border vertex
+    bool listed = false;       // in vertex_order
+  };
+  struct Face_state
+  {
+    bool scar = false;         // made by a split of this run, and not removed since
+    bool listed = false;       // in face_order
+  };
   // what one turn around a vertex tells
   struct Around { int valence = 0; int faces = 0; bool border = false; bool on_feature = false; };
 
@@ -81,15 +100,14 @@ class Chain_executor
   Default_qzip_visitor<PolygonMesh> default_visitor;
   Visitor visitor;
 
-  std::unordered_map<vertex_descriptor, Before, Vertex_hash> before;
-  std::unordered_map<vertex_descriptor, int, Vertex_hash> ideal;
-  std::unordered_set<vertex_descriptor, Vertex_hash> alive, created;
-  std::unordered_set<vertex_descriptor, Vertex_hash> took_border; // interior vertices merged with a border vertex
-  std::unordered_set<face_descriptor, Face_hash> new_faces;
-  // the same vertices and faces in the order they appeared, so that every decision and every output
+  Descriptor_hash_map<vertex_descriptor, Vertex_state> vertex_states;
+  Descriptor_hash_map<face_descriptor, Face_state> face_states;
+  // the same vertices and faces in the order they first appeared, so that every decision and every output
   // follows the surgery, not the hash order of descriptors (which differs between mesh types)
   std::vector<vertex_descriptor> vertex_order;
   std::vector<face_descriptor> face_order;
+  std::vector<vertex_descriptor> candidates; // of the clean-up
+  std::vector<int> codes_before, codes_after; // of the singularity check
   std::size_t collapses = 0, splits = 0, cleanups = 0;
 
 public:
@@ -124,9 +142,8 @@ public:
     r.number_of_splits = splits;
     r.number_of_cleanups = cleanups;
     r.touched_vertices = live_vertices_in_order();
-    std::unordered_set<face_descriptor, Face_hash> listed;
     for(face_descriptor f : face_order)
-      if(new_faces.count(f) != 0 && listed.insert(f).second) r.scar_faces.push_back(f);
+      if(face_states.find(f)->scar) r.scar_faces.push_back(f);
     if(ends_exist) locate_moved_pair(source_at, target_at, r);
     return r;
   }
@@ -137,7 +154,13 @@ public:
   Execution_failure apply(const Surgery_plan<PolygonMesh>& plan)
   {
     CGAL_precondition(plan.is_realizable());
-    for(const auto& vf : plan.expected_faces) ideal[vf.first] = vf.second; // a reverse plan's frozen numbers
+    reset();
+    for(const auto& vf : plan.expected_faces) // a reverse plan's frozen numbers
+    {
+      Vertex_state& s = state(vf.first);
+      s.has_ideal = true;
+      s.ideal = vf.second;
+    }
     const bool ends_exist = plan.source != GT::null_vertex() && plan.target != GT::null_vertex();
     source_code = ends_exist ? singularity_code(plan.source) : 0;
     target_code = ends_exist ? singularity_code(plan.target) : 0;
@@ -166,30 +189,52 @@ public:
   {
     std::vector<std::pair<vertex_descriptor, int> > out;
     for(vertex_descriptor v : live_vertices_in_order())
-      if(const auto it = ideal.find(v); it != ideal.end()) out.emplace_back(v, it->second);
+      if(const Vertex_state& s = known(v); s.has_ideal) out.emplace_back(v, s.ideal);
     return out;
   }
 
 private:
   VertexPointMap log_vpm() const { return log.vertex_point_map(); }
 
+  void reset()
+  {
+    vertex_states.clear();
+    face_states.clear();
+    vertex_order.clear();
+    face_order.clear();
+    collapses = splits = cleanups = 0;
+    cancelled = false;
+  }
+
+  // the state of `v` or `f`, made blank when there is none (the reference lasts until the next insertion)
+  Vertex_state& state(vertex_descriptor v) { return *vertex_states.insert(v, Vertex_state()).first; }
+  Face_state& face_state(face_descriptor f) { return *face_states.insert(f, Face_state()).first; }
+  // the state of a vertex that has one
+  const Vertex_state& known(vertex_descriptor v) const { return *vertex_states.find(v); }
+
+  void list(vertex_descriptor v)
+  {
+    Vertex_state& s = state(v);
+    if(!s.listed) { s.listed = true; vertex_order.push_back(v); }
+  }
+
   void touch(vertex_descriptor v)
   {
-    if(before.count(v) == 0 && created.count(v) == 0)
-    {
-      const Around a = around(v);
-      before[v] = Before{ a.border, singularity_code(v, a) };
-      alive.insert(v);
-      vertex_order.push_back(v);
-    }
+    if(const Vertex_state* s = vertex_states.find(v); s != nullptr && (s->touched || s->created)) return;
+    const Around a = around(v);
+    const int code = singularity_code(v, a);
+    Vertex_state& s = state(v);
+    s.touched = true;
+    s.before = Before{ a.border, code };
+    s.alive = true;
+    list(v);
   }
 
   std::vector<vertex_descriptor> live_vertices_in_order() const
   {
     std::vector<vertex_descriptor> out;
-    std::unordered_set<vertex_descriptor, Vertex_hash> listed;
     for(vertex_descriptor v : vertex_order)
-      if(alive.count(v) != 0 && listed.insert(v).second) out.push_back(v);
+      if(known(v).alive) out.push_back(v);
     return out;
   }
 
@@ -209,12 +254,20 @@ private:
     if(constrained_around(a) || constrained_around(c)) return false;
     touch(a); touch(b); touch(c); touch(d);
     visitor.on_collapse(h, pm);
-    new_faces.erase(face(h, pm));
+    face_state(face(h, pm)).scar = false;
     // a border c merged into an interior a (can_collapse_quad() refuses two border vertices): the merged
     // vertex takes the place of c on the border, with the number of quads c should have
-    if(is_border_vertex(c, pm) && !is_border_vertex(a, pm)) { ideal[a] = ideal_number_of_faces(c); took_border.insert(a); }
-    alive.erase(c);
-    created.erase(c);
+    if(is_border_vertex(c, pm) && !is_border_vertex(a, pm))
+    {
+      const int n = ideal_number_of_faces(c);
+      Vertex_state& s = state(a);
+      s.has_ideal = true;
+      s.ideal = n;
+      s.took_border = true;
+    }
+    Vertex_state& removed = state(c);
+    removed.alive = false;
+    removed.created = false;
     last_delimiters = log.collapse(h);
     ++collapses;
     return true;
@@ -230,13 +283,23 @@ private:
     visitor.on_split(h1, h2, pm);
     last_quad = log.split(h1, h2);
     const vertex_descriptor c = target(next(next(last_quad, pm), pm), pm);
-    alive.insert(c);
-    created.insert(c);
+    {
+      Vertex_state& s = state(c);
+      s.alive = true;
+      s.created = true;
+    }
     // a copy on the border takes the place of v there (v was on the border), with its number of quads
-    if(is_border_vertex(c, pm)) ideal[c] = ideal_number_of_faces(v);
-    vertex_order.push_back(c);
-    new_faces.insert(face(last_quad, pm));
-    face_order.push_back(face(last_quad, pm));
+    if(is_border_vertex(c, pm))
+    {
+      const int n = ideal_number_of_faces(v);
+      Vertex_state& s = state(c);
+      s.has_ideal = true;
+      s.ideal = n;
+    }
+    list(c);
+    Face_state& f = face_state(face(last_quad, pm));
+    f.scar = true;
+    if(!f.listed) { f.listed = true; face_order.push_back(face(last_quad, pm)); }
     ++splits;
     return true;
   }
@@ -322,10 +385,12 @@ private:
   // (two v5 merged) is split into two regular vertices, which leaves two v5.
   bool clean_up()
   {
-    const std::vector<vertex_descriptor> candidates = live_vertices_in_order();
+    candidates.clear();
+    for(vertex_descriptor v : vertex_order)
+      if(known(v).alive) candidates.push_back(v);
     for(vertex_descriptor v : candidates)
     {
-      if(alive.count(v) == 0 || is_border_vertex(v, pm)) continue;
+      if(!known(v).alive || is_border_vertex(v, pm)) continue;
       const std::size_t d = valence(v, pm);
       if(d == 2 && !remove_valence_2(v)) return false;
       if(d == 6 && !split_valence_6(v)) return false;
@@ -375,10 +440,11 @@ private:
   // border vertex created by a split sits on a straight piece of border and should have two
   int ideal_number_of_faces(vertex_descriptor v)
   {
-    auto it = ideal.find(v);
-    if(it != ideal.end()) return it->second;
+    if(const Vertex_state* s = vertex_states.find(v); s != nullptr && s->has_ideal) return s->ideal;
     const int n = vertex_defect_info(v, pm, log_vpm(), ecm, Geom_traits()).expected_faces;
-    ideal.emplace(v, n);
+    Vertex_state& s = state(v);
+    s.has_ideal = true;
+    s.ideal = n;
     return n;
   }
 
@@ -401,14 +467,18 @@ private:
   // them in complementary pairs, never add one), and no interior vertex reached the border.
   bool valences_preserved()
   {
-    std::vector<int> was, is;
-    for(const auto& kv : before)
-      if(kv.second.code != 0) was.push_back(kv.second.code);
-    for(vertex_descriptor v : alive)
+    std::vector<int>& was = codes_before;
+    std::vector<int>& is = codes_after;
+    was.clear();
+    is.clear();
+    for(vertex_descriptor v : vertex_order)
+      if(const Vertex_state& s = known(v); s.touched && s.before.code != 0) was.push_back(s.before.code);
+    for(vertex_descriptor v : vertex_order)
     {
-      const auto it = created.count(v) == 0 ? before.find(v) : before.end();
+      const Vertex_state s = known(v); // a copy: singularity_code() may add states
+      if(!s.alive) continue;
       const Around a = around(v);
-      if(a.border && it != before.end() && !it->second.border && took_border.count(v) == 0) return false;
+      if(a.border && s.touched && !s.created && !s.before.border && !s.took_border) return false;
       const int c = singularity_code(v, a);
       if(c != 0) is.push_back(c);
     }
@@ -427,8 +497,8 @@ private:
     {
       const int c = singularity_code(v);
       if(c == 0) continue;
-      const bool pre = before.count(v) != 0 && created.count(v) == 0;
-      if(!pre || before.at(v).code != c) moved.push_back(v);
+      const Vertex_state& s = known(v);
+      if(!s.touched || s.created || s.before.code != c) moved.push_back(v);
     }
     if(moved.size() != 2) return;
     bool swap = false;

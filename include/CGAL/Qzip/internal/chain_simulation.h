@@ -24,7 +24,6 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <functional>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -65,6 +64,14 @@ struct Local_constraint_map<Static_boolean_property_map<InputKey, false>, LocalK
   static type make(LocalMesh&, const char*) { return type(); }
 };
 
+// The named parameters of the executor on the local copy.
+template <typename PointMap, typename EdgeIsConstrainedMap, typename FaceIsConstrainedMap, typename Visitor>
+auto local_executor_parameters(PointMap points, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm, Visitor& visitor)
+{
+  return Qzip::parameters::face_is_constrained_map(fcm, CGAL::parameters::vertex_point_map(points)
+                                                          .edge_is_constrained_map(ecm).visitor(std::ref(visitor)));
+}
+
 // The result of a simulated execution: the failure the execution of the plan would meet (`NONE` when
 // it would succeed) and the path position where it would.
 struct Simulated_execution
@@ -101,8 +108,8 @@ struct Simulated_execution
 // first incoming halfedge at each complete vertex, so that the executor's clean-up, which turns around a
 // vertex from there, makes the same choices on the copy. An object is meant to be reused from plan to
 // plan: its buffers stay allocated (the hash maps, see Descriptor_hash_map; the arrays of the copy, which
-// is resized rather than cleared; the executor's operation log), so that a simulation allocates little
-// besides what the executor allocates.
+// is resized rather than cleared; the executor, with its operation log), so that a simulation allocates
+// little.
 template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap, typename FaceIsConstrainedMap>
 class Chain_simulation
 {
@@ -141,7 +148,6 @@ class Chain_simulation
   std::vector<halfedge_descriptor> outside;  // copied halfedges whose face may not be copied (border of the copy)
   std::vector<bool> complete;                // by local vertex index (later vertices are made by splits)
   Surgery_plan<Local_mesh> local_plan;
-  Operation_log<Local_mesh, Local_point_map> log; // the executor's, kept for its buffers
 
   // Checks, before each operation the executor applies to the copy, that its vertices and their
   // neighbours are complete (see above).
@@ -168,6 +174,15 @@ class Chain_simulation
       check(target(h1, m), m); check(source(h1, m), m); check(source(h2, m), m);
     }
   };
+
+  typedef decltype(local_executor_parameters(std::declval<Local_point_map>(), std::declval<typename Local_ecm::type>(),
+                                             std::declval<typename Local_fcm::type>(), std::declval<Cut_watcher&>()))
+    Executor_parameters;
+
+  // the executor, its operation log and its watcher, kept from plan to plan for their buffers
+  Operation_log<Local_mesh, Local_point_map> log;
+  Cut_watcher watcher;
+  Chain_executor<Local_mesh, Local_point_map, Executor_parameters> executor;
 
   bool is_copied(face_descriptor f) const { return f != GT::null_face() && face_copy.find(f) != nullptr; }
 
@@ -280,10 +295,7 @@ class Chain_simulation
     for(vertex_descriptor v : plan.path) local_plan.path.push_back(*vertex_copy.find(v));
 
     log.clear(); // the copy was made again
-    Cut_watcher watcher(complete);
-    const auto np = Qzip::parameters::face_is_constrained_map(fcm_local,
-                      CGAL::parameters::vertex_point_map(local.points()).edge_is_constrained_map(ecm_local).visitor(std::ref(watcher)));
-    Chain_executor<Local_mesh, Local_point_map, std::decay_t<decltype(np)> > executor(local, log, np);
+    watcher.reached_cut = false;
     Simulated_execution s;
     s.failure = executor.apply(local_plan);
     if(s.failure != Execution_failure::NONE) s.failed_step = executor.failed_position();
@@ -294,9 +306,10 @@ class Chain_simulation
 public:
   Chain_simulation()
     : ecm_local(Local_ecm::make(local, "e:qzip_constrained")), fcm_local(Local_fcm::make(local, "f:qzip_constrained")),
-      log(local, local.points())
+      log(local, local.points()), watcher(complete),
+      executor(local, log, local_executor_parameters(local.points(), ecm_local, fcm_local, watcher))
   {}
-  Chain_simulation(const Chain_simulation&) = delete; // the log refers to the copy
+  Chain_simulation(const Chain_simulation&) = delete; // the log and the executor refer to the copy
   Chain_simulation& operator=(const Chain_simulation&) = delete;
 
   // what the execution of `plan` (a forward plan: no prelude, no created vertex) on `pm` would do

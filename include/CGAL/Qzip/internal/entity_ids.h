@@ -10,10 +10,12 @@
 
 #include <CGAL/license/Qzip.h>
 
-#include <boost/functional/hash.hpp>
+#include <CGAL/Qzip/internal/descriptor_hash_map.h>
+
+#include <CGAL/assertions.h>
 
 #include <cstddef>
-#include <unordered_map>
+#include <vector>
 
 namespace CGAL {
 namespace Qzip {
@@ -25,6 +27,11 @@ namespace internal {
 // descriptor. An id is bound to a descriptor when an element is first named, unbound when the element
 // is removed, and bound to the new descriptor when an undo re-creates it: an id always denotes the same
 // element, whatever descriptors it had over time.
+//
+// Ids are numbered from 0, so an id's binding is an array entry. The map from descriptors to ids is never
+// erased from: an entry d -> i holds only while i is bound to d, so that unbinding touches the array alone
+// and a recycled descriptor is named anew by overwriting its entry. `clear()` keeps both buffers, so that
+// a journal cleared and filled again allocates nothing.
 template <typename Descriptor>
 class Entity_ids
 {
@@ -33,32 +40,37 @@ public:
 
   Id name(Descriptor d)
   {
-    auto it = id.find(d);
-    if(it != id.end()) return it->second;
-    id.emplace(d, next_id);
-    descriptor.emplace(next_id, d);
-    return next_id++;
+    const auto it = id.insert(d, bindings.size());
+    if(!it.second && holds(*it.first, d)) return *it.first;
+    *it.first = bindings.size();
+    bindings.push_back(Binding{ d, true });
+    return *it.first;
   }
-  Descriptor operator[](Id i) const { return descriptor.at(i); }
+  Descriptor operator[](Id i) const
+  {
+    CGAL_precondition(i < bindings.size() && bindings[i].bound);
+    return bindings[i].descriptor;
+  }
   void unbind(Descriptor d)
   {
-    auto it = id.find(d);
-    if(it == id.end()) return;
-    descriptor.erase(it->second);
-    id.erase(it);
+    if(const Id* i = id.find(d); i != nullptr && holds(*i, d)) bindings[*i].bound = false;
   }
   void rebind(Id i, Descriptor d)
   {
+    CGAL_precondition(i < bindings.size());
     unbind(d);
-    id[d] = i;
-    descriptor[i] = d;
+    *id.insert(d, i).first = i;
+    bindings[i] = Binding{ d, true };
   }
-  void clear() { id.clear(); descriptor.clear(); }
+  void clear() { id.clear(); bindings.clear(); }
 
 private:
-  std::unordered_map<Descriptor, Id, boost::hash<Descriptor> > id;
-  std::unordered_map<Id, Descriptor> descriptor;
-  Id next_id = 0;
+  struct Binding { Descriptor descriptor; bool bound; };
+
+  bool holds(Id i, Descriptor d) const { return bindings[i].bound && bindings[i].descriptor == d; }
+
+  Descriptor_hash_map<Descriptor, Id> id;
+  std::vector<Binding> bindings; // by id
 };
 
 } // namespace internal
