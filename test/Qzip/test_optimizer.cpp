@@ -494,16 +494,25 @@ void test_look_ahead()
   make_genus3_plate(m);
   const long chi = euler_characteristic(m);
   assert(chi == -4);
-  Q::optimize_singularities(m, Q::parameters::do_look_ahead(false, CGAL::parameters::random_seed(3)));
+  // the first seed whose run without the look-ahead leaves more than the optimum (a v3-v5 pair or more)
+  unsigned int seed = 0;
+  for(; seed < 20; ++seed)
+  {
+    clear(m);
+    make_genus3_plate(m);
+    Q::optimize_singularities(m, Q::parameters::do_look_ahead(false, CGAL::parameters::random_seed(seed)));
+    if(singularities(m) > 16) break;
+  }
+  assert(seed < 20);
   Smoother smoother(m, get(CGAL::vertex_point, m), ECM(), FCM(), true);
   smoother.quality_floor = 0.1;
   Chains::Settings settings;
   settings.max_distance = settings.max_depth = 6;
   Chains chains(m, get(CGAL::vertex_point, m), ECM(), FCM(), smoother, settings);
   Chains::Settings pair_settings = settings;
-  pair_settings.partner_distance = 0;
-  const long f0 = long(num_faces(m));
-  auto within_ten_percent = [&](long change) { return std::abs(double(long(num_faces(m)) + change - f0)) <= 0.1 * double(f0); };
+  pair_settings.budget = 1;
+  const long f0 = long(faces(m).size());
+  auto within_ten_percent = [&](long change) { return std::abs(double(long(faces(m).size()) + change - f0)) <= 0.1 * double(f0); };
 
   std::size_t kept = 0, failed_after_executions = 0;
   for(bool again = true; again; )
@@ -523,11 +532,23 @@ void test_look_ahead()
       Chains::Chain chain;
       Chains none(m, get(CGAL::vertex_point, m), ECM(), FCM(), smoother, settings);
       assert(!none.cancel(v, [](long) { return false; }, chain) && none.number_of_executions() == 0);
-      // no partner beyond the closest singularity: only Q-zips of the pair, which move it and never cancel
-      Chains pairs_only(m, get(CGAL::vertex_point, m), ECM(), FCM(), smoother, pair_settings);
-      assert(!pairs_only.cancel(v, within_ten_percent, chain));
-      if(pairs_only.number_of_executions() > 0) ++failed_after_executions;
-      assert(are_isomorphic(m, before) && sorted_points(m) == sorted_points(before));
+      // on a copy, a search allowed one Q-zip, which cancels only a pair at most two edges apart; a search that
+      // fails after executing it leaves the copy as it was
+      {
+        Surface_mesh trial;
+        copy_mesh(m, trial);
+        auto tv = boost::graph_traits<Surface_mesh>::null_vertex();
+        for(auto w : vertices(trial)) if(trial.point(w) == p) tv = w;
+        Smoother trial_smoother(trial, get(CGAL::vertex_point, trial), ECM(), FCM(), true);
+        trial_smoother.quality_floor = 0.1;
+        Chains pairs_only(trial, get(CGAL::vertex_point, trial), ECM(), FCM(), trial_smoother, pair_settings);
+        Chains::Chain pair_chain;
+        if(!pairs_only.cancel(tv, [](long) { return true; }, pair_chain))
+        {
+          if(pairs_only.number_of_executions() > 0) ++failed_after_executions;
+          assert(are_isomorphic(trial, before) && sorted_points(trial) == sorted_points(before));
+        }
+      }
       if(chains.cancel(v, within_ten_percent, chain))
       {
         ++kept;
@@ -536,14 +557,14 @@ void test_look_ahead()
         assert(singularities(m) + 2 == count);
         assert(CGAL::is_valid_polygon_mesh(m) && all_faces_have_degree(m, 4) && euler_characteristic(m) == chi);
         assert(Q::compute_mesh_report(m).number_of_inverted_quads == 0);
-        assert(std::abs(double(long(num_faces(m)) - f0)) <= 0.1 * double(f0) + 2);
+        assert(std::abs(double(long(faces(m).size()) - f0)) <= 0.1 * double(f0) + 2);
         break; // the other sources may have moved
       }
       if(chains.number_of_executions() > executions) ++failed_after_executions;
       assert(are_isomorphic(m, before) && sorted_points(m) == sorted_points(before));
     }
   }
-  std::cout << "look-ahead on the genus-3 plate: " << kept << " chains kept, " << failed_after_executions
+  std::cout << "look-ahead on the genus-3 plate (seed " << seed << "): " << kept << " chains kept, " << failed_after_executions
             << " searches undone, " << chains.number_of_executions() << " Q-zips executed, " << singularities(m)
             << " singularities left" << std::endl;
   assert(kept > 0 && failed_after_executions > 0);
