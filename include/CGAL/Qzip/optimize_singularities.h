@@ -144,7 +144,7 @@ Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valen
   \cgalParamNEnd
   \cgalParamNBegin{do_look_ahead}
     \cgalParamDescription{(Qzip) whether the end game also tries chains of Q-zips that bring a singularity onto
-                          one of the opposite sign up to six edges away, keeping only chains that cancel them and
+                          one of the opposite sign up to fourteen edges away, keeping only chains that cancel them and
                           pass the quality guard (see the user manual)}
     \cgalParamDefault{`true`}
   \cgalParamNEnd

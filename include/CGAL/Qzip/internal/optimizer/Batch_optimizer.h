@@ -798,7 +798,7 @@ private:
       sources.resize((sources.size() + 1) / 2);
     }
 
-    // candidates are planned without simulating their execution (it costs about three executions, and a
+    // candidates are planned without simulating their execution (it costs about two executions, and a
     // chosen surgery whose execution fails is rolled back exactly by the executor)
     const auto plan_np = Qzip::parameters::simulate_chain(false, Qzip::parameters::face_is_constrained_map(fcm,
                            CGAL::parameters::edge_is_constrained_map(ecm).vertex_point_map(vpm)));
