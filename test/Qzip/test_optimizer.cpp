@@ -465,6 +465,12 @@ void test_travel()
 
 // the paper's genus-3 robustness test (Fig. 17): the closed surface of a 7 x 3 x 1 plate of voxels with
 // three holes, triangulated and refined once by Catmull-Clark (as in benchmark_optimizer)
+// the end game's smoother on a Surface_mesh without features or protected faces
+typedef CGAL::Static_boolean_property_map<boost::graph_traits<Surface_mesh>::edge_descriptor, false> ECM;
+typedef CGAL::Static_boolean_property_map<boost::graph_traits<Surface_mesh>::face_descriptor, false> FCM;
+typedef CGAL::property_map_selector<Surface_mesh, CGAL::vertex_point_t>::type VPM;
+typedef Q::internal::Quad_smoother<Surface_mesh, VPM, ECM, FCM, K> Smoother;
+
 void make_genus3_plate(Surface_mesh& m)
 {
   make_genus3_voxel_plate(m);
@@ -482,12 +488,6 @@ void make_genus3_plate(Surface_mesh& m)
 // optimum (exactly 16 v5, no v3) reached on every seed.
 void test_look_ahead()
 {
-  typedef boost::graph_traits<Surface_mesh>::edge_descriptor edge_descriptor;
-  typedef boost::graph_traits<Surface_mesh>::face_descriptor face_descriptor;
-  typedef CGAL::Static_boolean_property_map<edge_descriptor, false> ECM;
-  typedef CGAL::Static_boolean_property_map<face_descriptor, false> FCM;
-  typedef CGAL::property_map_selector<Surface_mesh, CGAL::vertex_point_t>::type VPM;
-  typedef Q::internal::Quad_smoother<Surface_mesh, VPM, ECM, FCM, K> Smoother;
   typedef Q::internal::Look_ahead<Surface_mesh, VPM, ECM, FCM, Smoother> Chains;
 
   Surface_mesh m;
@@ -597,12 +597,6 @@ void test_look_ahead()
 // Jacobian never decreases.
 void test_untangle()
 {
-  typedef boost::graph_traits<Surface_mesh>::edge_descriptor edge_descriptor;
-  typedef boost::graph_traits<Surface_mesh>::face_descriptor face_descriptor;
-  typedef CGAL::Static_boolean_property_map<edge_descriptor, false> ECM;
-  typedef CGAL::Static_boolean_property_map<face_descriptor, false> FCM;
-  typedef CGAL::property_map_selector<Surface_mesh, CGAL::vertex_point_t>::type VPM;
-  typedef Q::internal::Quad_smoother<Surface_mesh, VPM, ECM, FCM, K> Smoother;
 
   Surface_mesh m;
   make_quad_grid(m, 4, 4);
