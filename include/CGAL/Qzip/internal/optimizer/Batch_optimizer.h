@@ -590,6 +590,10 @@ private:
     {
       for(std::size_t i = 0; i < scar.size(); ++i) put(vpm, scar[i], saved[i]);
       undo_qzip(history);
+      // the vertices the surgery created are dead again, and their descriptors may have been those of
+      // vertices removed earlier in the batch, which the plans of other candidates still name: marked (no
+      // walk), those plans are skipped instead of walking around a dead vertex
+      mark(r.touched_vertices);
       mark_after_undo();
       ++stats.number_of_undone_surgeries;
       visitor.on_undo(plan);
