@@ -296,7 +296,9 @@ private:
   // fails, untangles it (see Quad_smoother::untangle()) and checks again; restores the positions if not.
   // The vertices of the region that no Q-zip of the search came near are alive and unchanged; the
   // others (removed, re-created by an undo, created, or moved) are found from them: the scar is every
-  // vertex reached from them without passing one of them, and one edge around.
+  // vertex reached from them without passing one of them, and one edge around. Only live vertices are
+  // walked around (the touched vertices recorded during the search may have been removed by a later Q-zip
+  // and its undo; on Polyhedron_3 their handles dangle).
   bool passes_quality_guard(const Path_state& state, Chain& chain)
   {
     ++judgements;
@@ -304,7 +306,6 @@ private:
     for(vertex_descriptor v : state.region) if(near_chain.count(v) == 0) unchanged.insert(v);
     std::unordered_set<vertex_descriptor, Vertex_hash> reached;
     std::vector<vertex_descriptor> changed;
-    for(vertex_descriptor v : state.touched) if(reached.insert(v).second) changed.push_back(v);
     for(std::size_t i = 0; i < state.region.size(); ++i) // the region's outer shell is never changed
       if(state.region_level[i] < region_radius() && unchanged.count(state.region[i]) != 0)
         for(halfedge_descriptor h : halfedges_around_target(halfedge(state.region[i], pm), pm))
