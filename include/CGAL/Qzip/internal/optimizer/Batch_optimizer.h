@@ -496,7 +496,6 @@ private:
                   std::pair<vertex_descriptor, vertex_descriptor>* moved = nullptr)
   {
     const Surgery_plan<PolygonMesh>& plan = cand.plan;
-    const Surgery_key surgery_key = require_decrease ? cand.key : key(plan); // before the ends move
     ++surgery_serial;
     if(!follows) first_of_pair = surgery_serial;
     // The region of the plan must not have been operated on in this batch. Only the path vertices are
@@ -506,6 +505,8 @@ private:
     for(vertex_descriptor v : plan.path)
       if(operated_on(v)) { ++stats.number_of_skipped_surgeries; return SKIPPED; }
     if(!keeps_face_count(plan)) { ++stats.number_of_skipped_surgeries; return SKIPPED; }
+    // read once the path is known to be alive (a skipped plan may name dead vertices), before the ends move
+    const Surgery_key surgery_key = require_decrease ? cand.key : key(plan);
     // A surgery only removes vertices within three edges of its path (the far corners of the clean-up);
     // the vertices at distance four are never touched: they stay alive through an undo and lead back
     // to the re-created vertices, whose descriptors are new (or recycled with reset properties).
