@@ -155,12 +155,7 @@ public:
   {
     CGAL_precondition(plan.is_realizable());
     reset();
-    for(const auto& vf : plan.expected_faces) // a reverse plan's frozen numbers
-    {
-      Vertex_state& s = state(vf.first);
-      s.has_ideal = true;
-      s.ideal = vf.second;
-    }
+    for(const auto& vf : plan.expected_faces) set_ideal(vf.first, vf.second); // a reverse plan's frozen numbers
     const bool ends_exist = plan.source != GT::null_vertex() && plan.target != GT::null_vertex();
     source_code = ends_exist ? singularity_code(plan.source) : 0;
     target_code = ends_exist ? singularity_code(plan.target) : 0;
@@ -212,10 +207,22 @@ private:
   // the state of a vertex that has one
   const Vertex_state& known(vertex_descriptor v) const { return *vertex_states.find(v); }
 
+  void set_ideal(vertex_descriptor v, int n)
+  {
+    Vertex_state& s = state(v);
+    s.has_ideal = true;
+    s.ideal = n;
+  }
+
   void list(vertex_descriptor v)
   {
     Vertex_state& s = state(v);
     if(!s.listed) { s.listed = true; vertex_order.push_back(v); }
+  }
+  void list(face_descriptor f)
+  {
+    Face_state& s = face_state(f);
+    if(!s.listed) { s.listed = true; face_order.push_back(f); }
   }
 
   void touch(vertex_descriptor v)
@@ -233,9 +240,15 @@ private:
   std::vector<vertex_descriptor> live_vertices_in_order() const
   {
     std::vector<vertex_descriptor> out;
+    collect_live_vertices(out);
+    return out;
+  }
+  // the same, into a buffer
+  void collect_live_vertices(std::vector<vertex_descriptor>& out) const
+  {
+    out.clear();
     for(vertex_descriptor v : vertex_order)
       if(known(v).alive) out.push_back(v);
-    return out;
   }
 
   bool constrained_around(vertex_descriptor v) const
@@ -259,11 +272,8 @@ private:
     // vertex takes the place of c on the border, with the number of quads c should have
     if(is_border_vertex(c, pm) && !is_border_vertex(a, pm))
     {
-      const int n = ideal_number_of_faces(c);
-      Vertex_state& s = state(a);
-      s.has_ideal = true;
-      s.ideal = n;
-      s.took_border = true;
+      set_ideal(a, ideal_number_of_faces(c));
+      state(a).took_border = true;
     }
     Vertex_state& removed = state(c);
     removed.alive = false;
@@ -289,17 +299,10 @@ private:
       s.created = true;
     }
     // a copy on the border takes the place of v there (v was on the border), with its number of quads
-    if(is_border_vertex(c, pm))
-    {
-      const int n = ideal_number_of_faces(v);
-      Vertex_state& s = state(c);
-      s.has_ideal = true;
-      s.ideal = n;
-    }
+    if(is_border_vertex(c, pm)) set_ideal(c, ideal_number_of_faces(v));
     list(c);
-    Face_state& f = face_state(face(last_quad, pm));
-    f.scar = true;
-    if(!f.listed) { f.listed = true; face_order.push_back(face(last_quad, pm)); }
+    face_state(face(last_quad, pm)).scar = true;
+    list(face(last_quad, pm));
     ++splits;
     return true;
   }
@@ -385,9 +388,7 @@ private:
   // (two v5 merged) is split into two regular vertices, which leaves two v5.
   bool clean_up()
   {
-    candidates.clear();
-    for(vertex_descriptor v : vertex_order)
-      if(known(v).alive) candidates.push_back(v);
+    collect_live_vertices(candidates);
     for(vertex_descriptor v : candidates)
     {
       if(!known(v).alive || is_border_vertex(v, pm)) continue;
@@ -442,9 +443,7 @@ private:
   {
     if(const Vertex_state* s = vertex_states.find(v); s != nullptr && s->has_ideal) return s->ideal;
     const int n = vertex_defect_info(v, pm, log_vpm(), ecm, Geom_traits()).expected_faces;
-    Vertex_state& s = state(v);
-    s.has_ideal = true;
-    s.ideal = n;
+    set_ideal(v, n);
     return n;
   }
 
