@@ -183,15 +183,19 @@ public:
     return e;
   }
 
-  double min_quad_quality(vertex_descriptor v) const
+  // the number of inverted quads around v and the smallest scaled Jacobian among its quads (1 if none)
+  std::pair<int, double> incident_quality(vertex_descriptor v) const
   {
+    int inverted = 0;
     double m = 1;
     for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
     {
       if(is_border(h, pm) || !is_quad(h, pm)) continue;
-      m = (std::min)(m, quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm)));
+      const double j = quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm));
+      if(j <= 0) ++inverted;
+      m = (std::min)(m, j);
     }
-    return m;
+    return std::make_pair(inverted, m);
   }
 
   // the closest point to p on the reference surface (or `old`, the position of v, if it is closer)
@@ -252,10 +256,10 @@ public:
         if(np == old) continue;
         // kept if the incident quads stay above the floor, or else are not worse than before
         put(vpm, v, np);
-        const double after = min_quad_quality(v);
+        const double after = incident_quality(v).second;
         if(after > 0 && after >= quality_floor) { ++accepted; continue; }
         put(vpm, v, old);
-        if(after >= min_quad_quality(v)) { put(vpm, v, np); ++accepted; }
+        if(after >= incident_quality(v).second) { put(vpm, v, np); ++accepted; }
       }
     }
     return accepted;
@@ -336,21 +340,6 @@ public:
       if(moved_in_sweep == 0) break;
     }
     return moved;
-  }
-
-  // the number of inverted quads around v and the smallest scaled Jacobian among its quads (1 if none)
-  std::pair<int, double> incident_quality(vertex_descriptor v) const
-  {
-    int inverted = 0;
-    double m = 1;
-    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-    {
-      if(is_border(h, pm) || !is_quad(h, pm)) continue;
-      const double j = quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm));
-      if(j <= 0) ++inverted;
-      m = (std::min)(m, j);
-    }
-    return std::make_pair(inverted, m);
   }
 };
 
