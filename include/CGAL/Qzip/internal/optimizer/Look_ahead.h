@@ -306,19 +306,18 @@ private:
     for(vertex_descriptor v : state.region) if(near_chain.count(v) == 0) unchanged.insert(v);
     std::unordered_set<vertex_descriptor, Vertex_hash> reached;
     std::vector<vertex_descriptor> changed;
-    for(std::size_t i = 0; i < state.region.size(); ++i) // the region's outer shell is never changed
-      if(state.region_level[i] < region_radius() && unchanged.count(state.region[i]) != 0)
-        for(halfedge_descriptor h : halfedges_around_target(halfedge(state.region[i], pm), pm))
-        {
-          const vertex_descriptor w = source(h, pm);
-          if(unchanged.count(w) == 0 && reached.insert(w).second) changed.push_back(w);
-        }
-    for(std::size_t i = 0; i < changed.size(); ++i)
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(changed[i], pm), pm))
+    auto reach_changed_neighbours = [&](vertex_descriptor v)
+    {
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
       {
         const vertex_descriptor w = source(h, pm);
         if(unchanged.count(w) == 0 && reached.insert(w).second) changed.push_back(w);
       }
+    };
+    for(std::size_t i = 0; i < state.region.size(); ++i) // the region's outer shell is never changed
+      if(state.region_level[i] < region_radius() && unchanged.count(state.region[i]) != 0)
+        reach_changed_neighbours(state.region[i]);
+    for(std::size_t i = 0; i < changed.size(); ++i) reach_changed_neighbours(changed[i]);
     std::vector<vertex_descriptor> scar = ball(changed, 1);
     std::sort(scar.begin(), scar.end(), [this](vertex_descriptor x, vertex_descriptor y)
     {
