@@ -20,7 +20,8 @@
 #include <CGAL/Qzip/quad_operations.h>
 #include <CGAL/Qzip/singularities.h>
 
-#include <algorithm>
+#include "qzip_test_utils.h" // singular_vertices(), singularities_within()
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -83,21 +84,6 @@ std::size_t number_of_singularities(const Mesh& m)
   return count;
 }
 
-// the vertices within `radius` edges of v, v first
-std::vector<vertex_descriptor> ball(const Mesh& m, vertex_descriptor v, int radius)
-{
-  std::vector<vertex_descriptor> ring(1, v);
-  std::map<vertex_descriptor, int> level{ { v, 0 } };
-  for(std::size_t i = 0; i < ring.size(); ++i)
-  {
-    const int next_level = level[ring[i]] + 1;
-    if(next_level > radius) continue;
-    for(halfedge_descriptor h : halfedges_around_target(ring[i], m))
-      if(level.emplace(source(h, m), next_level).second) ring.push_back(source(h, m));
-  }
-  return ring;
-}
-
 // moves every vertex `iterations` times halfway to the centroid of its neighbours, back onto the sphere
 void smooth_on_sphere(Mesh& m, int iterations)
 {
@@ -150,9 +136,7 @@ int main(int argc, char** argv)
   for(long planted = 0, tries = 0; planted < clusters && tries < 100 * clusters; ++tries)
   {
     const vertex_descriptor v = all[std::size_t(rng.get_int(0, int(all.size())))];
-    const std::vector<vertex_descriptor> around = ball(m, v, 3);
-    if(std::any_of(around.begin(), around.end(), [&](vertex_descriptor w) { return Q::vertex_defect(w, m) != 0; }))
-      continue;
+    if(Q::vertex_defect(v, m) != 0 || !qzip_test::singularities_within(m, v, 1, 3).empty()) continue;
     const halfedge_descriptor h1 = halfedge(v, m);
     const halfedge_descriptor h2 = prev(opposite(prev(opposite(h1, m), m), m), m);
     if(!Q::can_split_vertex_into_quad(h1, h2, m)) continue;
@@ -171,11 +155,9 @@ int main(int argc, char** argv)
   long kept = 0;
   for(long tries = 0; kept < scatter && tries < 20 * scatter; ++tries)
   {
-    std::vector<vertex_descriptor> singular;
-    for(vertex_descriptor v : vertices(m)) if(Q::vertex_defect(v, m) != 0) singular.push_back(v);
+    const std::vector<vertex_descriptor> singular = qzip_test::singular_vertices(m);
     const vertex_descriptor s = singular[std::size_t(rng.get_int(0, int(singular.size())))];
-    std::vector<vertex_descriptor> near;
-    for(vertex_descriptor w : ball(m, s, 8)) if(w != s && Q::vertex_defect(w, m) != 0) near.push_back(w);
+    const std::vector<vertex_descriptor> near = qzip_test::singularities_within(m, s, 1, 8);
     if(near.empty()) continue;
     const vertex_descriptor t = near[std::size_t(rng.get_int(0, int(near.size())))];
     const auto path = Q::shortest_surgery_path(m, s, t);

@@ -293,11 +293,7 @@ int homotopy_run(const std::vector<std::string>& files, std::size_t pairs, unsig
       std::cout << "| " << base_name(f) << " | " << (k == 0 ? "kept away" : "anywhere") << " | " << h[k].done << " | "
                 << h[k].isomorphic << " | " << h[k].u_turn_isomorphic << " | " << h[k].differing << " | "
                 << h[k].u_turn_differing << " |" << std::endl;
-      total[k].done += h[k].done;
-      total[k].isomorphic += h[k].isomorphic;
-      total[k].u_turn_isomorphic += h[k].u_turn_isomorphic;
-      total[k].differing += h[k].differing;
-      total[k].u_turn_differing += h[k].u_turn_differing;
+      total[k] += h[k];
     }
   }
   for(int k = 0; k < 2; ++k)

@@ -16,15 +16,6 @@
 using namespace qzip_test;
 namespace Q = CGAL::Qzip;
 
-template <typename Mesh>
-std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> singular_vertices(const Mesh& m)
-{
-  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> out;
-  for(auto v : vertices(m))
-    if(!on_border(v, m) && valence(v, m) != 4) out.push_back(v);
-  return out;
-}
-
 /// the number of faces each border vertex should have, from the geometry (sector rule of vertex_defect()),
 /// by vertex and by position: a border vertex that a Q-zip created, or an interior vertex that took the
 /// place of a border vertex, should have the number of the border vertex it replaced, the one nearest to it
@@ -269,9 +260,7 @@ void test_simulation_history(const std::string& path, unsigned seed, std::size_t
   Mesh m;
   assert(read_mesh(path, m));
   Q::preprocess_valences(m);
-  std::vector<vertex_descriptor> singular;
-  for(vertex_descriptor v : vertices(m))
-    if(!on_border(v, m) && valence(v, m) != 4) singular.push_back(v);
+  const std::vector<vertex_descriptor> singular = singular_vertices(m);
   CGAL::Random rng(seed);
   std::vector<std::vector<vertex_descriptor> > paths;
   for(int attempt = 0; paths.size() < 60 && attempt < 1000; ++attempt)

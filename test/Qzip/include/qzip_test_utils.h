@@ -210,6 +210,16 @@ std::map<int, int> valence_histogram(const Mesh& m)
   return hist;
 }
 
+/// the interior singular vertices (valence other than 4)
+template <typename Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> singular_vertices(const Mesh& m)
+{
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> out;
+  for(auto v : vertices(m))
+    if(!on_border(v, m) && valence(v, m) != 4) out.push_back(v);
+  return out;
+}
+
 /// the interior singular vertices (valence other than 4) at between `lo` and `hi` edges from `s`, in
 /// breadth-first order.
 template <typename Mesh>
@@ -620,6 +630,14 @@ struct Homotopy_counts
 {
   std::size_t done = 0, refused = 0, rolled_back = 0;
   std::size_t isomorphic = 0, differing = 0, u_turn_isomorphic = 0, u_turn_differing = 0;
+
+  Homotopy_counts& operator+=(const Homotopy_counts& o)
+  {
+    done += o.done; refused += o.refused; rolled_back += o.rolled_back;
+    isomorphic += o.isomorphic; differing += o.differing;
+    u_turn_isomorphic += o.u_turn_isomorphic; u_turn_differing += o.u_turn_differing;
+    return *this;
+  }
 };
 
 /// Homotopy invariance on the mesh `m`: for `pairs` random pairs of singularities 3 to 12 edges apart, a
@@ -633,8 +651,7 @@ void compare_homotopic_paths(const Mesh& m, const std::string& name, std::size_t
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   CGAL::Random rng(seed);
-  std::vector<vertex_descriptor> sing;
-  for(auto v : vertices(m)) if(!on_border(v, m) && valence(v, m) != 4) sing.push_back(v);
+  const std::vector<vertex_descriptor> sing = singular_vertices(m);
   if(sing.size() < 2) return;
   for(std::size_t tried = 0, used = 0; used < pairs && tried < 20 * pairs; ++tried)
   {
