@@ -54,10 +54,10 @@ inline bool same_file(const std::string& a, const std::string& b)
 /// Checks the header of an OFF or PLY file before CGAL's readers see it: the element counts it declares must
 /// fit in the file (every element takes at least one byte); in a PLY header every `property` line must
 /// follow an `element` line, element counts must be non-negative integers, and vertex coordinates and normals
-/// must be `float` or `double`. CGAL 5.5's readers reserve memory for the declared counts before reading, which
+/// must be `float` or `double` (not lists). CGAL 5.5's readers reserve memory for the declared counts before reading, which
 /// fails (`std::bad_alloc`, or an abort under AddressSanitizer) on absurd counts, and its PLY reader
 /// dereferences the last element of an empty list on a property without element, and a null pointer on
-/// integer coordinates (segmentation faults in Release; assertions otherwise).
+/// integer or list coordinates (segmentation faults in Release; assertions otherwise).
 /// Other formats and binary OFF are not checked.
 inline bool check_file_header(const std::string& path, std::uintmax_t file_size, std::string& error)
 {
@@ -105,13 +105,19 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
         error = "cannot read '" + path + "': malformed PLY header (a property before any element)";
         return false;
       }
-      else if(keyword == "property" && element == "vertex" && (is >> type >> name) && type != "list" &&
-              (name == "x" || name == "y" || name == "z" || name == "nx" || name == "ny" || name == "nz") &&
-              type != "float" && type != "float32" && type != "double" && type != "float64")
+      else if(keyword == "property" && element == "vertex" && (is >> type))
       {
-        error = "cannot read '" + path + "': vertex property '" + name + "' is of type '" + type
-                + "' (float or double expected)";
-        return false;
+        // `property <type> <name>` or `property list <count type> <item type> <name>`
+        const bool list = type == "list";
+        if(list) is >> type >> type;
+        is >> name;
+        if((name == "x" || name == "y" || name == "z" || name == "nx" || name == "ny" || name == "nz") &&
+           (list || (type != "float" && type != "float32" && type != "double" && type != "float64")))
+        {
+          error = "cannot read '" + path + "': vertex property '" + name + "' is of type '" + (list ? "list of " : "")
+                  + type + "' (float or double expected)";
+          return false;
+        }
       }
     }
     return !too_many(total);
