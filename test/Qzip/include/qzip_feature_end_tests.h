@@ -442,6 +442,54 @@ inline bool plant_feature_chain(Surface_mesh& m, const Feature_segments& segment
   return false;
 }
 
+/// On the grid with a +1 planted on a straight feature line: a sketch from the feature defect to the interior
+/// singularity is planned reversed (the same plan as the sketch from the singularity), and a sketch that arrives
+/// along a feature edge is refused.
+inline void test_feature_end_sketch_orientation()
+{
+  namespace Q = CGAL::Qzip;
+  Surface_mesh m;
+  const Feature_segments segments = make_grid_with_feature(m, 16, 12, { { { 0, 6 } }, { { 16, 6 } } }, { { { 5, 1, 5, 6, 1 } } });
+  const Feature_map f = mark_features(m, segments);
+  const auto np = CGAL::parameters::edge_is_constrained_map(f);
+  std::size_t realizable = 0, along = 0;
+  for(auto t : vertices(m))
+  {
+    if(on_border(t, m) || !on_feature(t, m, f) || Q::vertex_defect(t, m, np) != 1) continue;
+    for(auto s : vertices(m))
+    {
+      if(on_border(s, m) || on_feature(s, m, f) || (valence(s, m) != 3 && valence(s, m) != 5)) continue;
+      const auto sketch = Q::shortest_surgery_path(m, s, t, np);
+      if(sketch.empty()) continue;
+      for(int motion = 0; motion < 4; ++motion)
+      {
+        const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion), np);
+        const auto reversed = Q::plan_qzip(m, std::vector<Surface_mesh::Vertex_index>(sketch.rbegin(), sketch.rend()),
+                                           Q::Strip_operation(motion), np);
+        assert(reversed.status == plan.status && reversed.path == plan.path && reversed.operations == plan.operations);
+        realizable += plan.is_realizable();
+      }
+      // the shortest surgery path to a neighbour x of t along the feature, then x -> t
+      for(auto h : CGAL::halfedges_around_target(halfedge(t, m), m))
+        if(get(f, edge(h, m)) && !on_border(source(h, m), m))
+        {
+          auto along_feature = Q::shortest_surgery_path(m, s, source(h, m), np);
+          if(along_feature.empty() || std::find(along_feature.begin(), along_feature.end(), t) != along_feature.end()) continue;
+          along_feature.push_back(t);
+          for(int motion = 0; motion < 4; ++motion)
+          {
+            const auto plan = Q::plan_qzip(m, along_feature, Q::Strip_operation(motion), np);
+            assert(!plan.is_realizable());
+            along += plan.status == Q::Plan_status::ENDPOINT_ADJUSTMENT;
+          }
+        }
+    }
+  }
+  std::cout << "  feature ends: " << realizable << " realizable plans equal to those of the reversed sketches, " << along
+            << " arrivals along a feature edge refused (ENDPOINT_ADJUSTMENT)" << std::endl;
+  assert(realizable > 0 && along > 0);
+}
+
 /// Q-zips ending at feature defects on planted grids (a straight feature line, a feature line with a right-angle
 /// turn) and on real CAD meshes (fandisk bundled; anchor_sharp and joint from the shared corpus when present).
 inline void test_feature_end_moves()
@@ -497,8 +545,10 @@ inline void test_feature_end_moves()
   }
   grids.print("feature defects, planted grids");
   real.print("feature defects, CAD meshes");
-  assert(grids.moved > 0 && grids.reversed > 0 && grids.rolled_back == 0);
-  assert(real.moved > 0);
+  for(const Feature_move_counters* c : { &grids, &real })
+    assert(c->moved > 0 && c->reversed == c->moved && c->rolled_back == 0 && c->no_reverse.empty());
+  assert(grids.with_quad_too_few > 0 && grids.at_turn > 0);
+  test_feature_end_sketch_orientation();
 }
 
 } // namespace qzip_test
