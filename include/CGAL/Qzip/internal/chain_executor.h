@@ -26,6 +26,7 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -108,6 +109,10 @@ class Chain_executor
   std::vector<face_descriptor> face_order;
   std::vector<vertex_descriptor> candidates; // of the clean-up
   std::vector<int> codes_before, codes_after; // of the singularity check
+  // the sectors of feature vertices (see sector_codes()): their frozen numbers of quads, named by the
+  // constrained halfedge that starts them, and the codes of the irregular ones before and after
+  Descriptor_hash_map<halfedge_descriptor, int> sector_ideals;
+  std::vector<int> sector_codes_before, sector_codes_after;
   std::size_t collapses = 0, splits = 0, cleanups = 0;
 
 public:
@@ -197,6 +202,8 @@ private:
     face_states.clear();
     vertex_order.clear();
     face_order.clear();
+    sector_ideals.clear();
+    sector_codes_before.clear();
     collapses = splits = cleanups = 0;
     cancelled = false;
   }
@@ -235,6 +242,35 @@ private:
     s.before = Before{ a.border, code };
     s.alive = true;
     list(v);
+    if(!a.border) sector_codes(v, sector_codes_before);
+  }
+
+  // A vertex on a feature, away from the border, is also judged sector by sector (its defect is the sum of
+  // its sectors'; a surgery must not trade a quad of one sector for a quad of another): the codes
+  // 100 + defect of its irregular sectors. A sector is named by the incoming halfedge of the constrained
+  // edge that starts it counterclockwise (constrained edges keep their halfedges through every operation),
+  // and its number of quads is frozen from the geometry at the first look, as the vertex's.
+  void sector_codes(vertex_descriptor v, std::vector<int>& out)
+  {
+    if constexpr(std::is_same<ECM, Static_boolean_property_map<edge_descriptor, false> >::value) return;
+    halfedge_descriptor start = GT::null_halfedge();
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      if(get(ecm, edge(h, pm))) { start = h; break; }
+    if(start == GT::null_halfedge()) return;
+    halfedge_descriptor first = start;
+    int faces = 0;
+    double theta = 0;
+    for(halfedge_descriptor h : halfedges_around_target(start, pm)) // face(h) between edge(h) and edge(next(h))
+    {
+      theta += corner_angle(h, pm, log_vpm(), Geom_traits());
+      ++faces;
+      if(!get(ecm, edge(next(h, pm), pm))) continue;
+      const int ideal = *sector_ideals.insert(first, internal::ideal_number_of_faces(theta)).first;
+      if(faces != ideal) out.push_back(100 + faces - ideal);
+      first = opposite(next(h, pm), pm);
+      faces = 0;
+      theta = 0;
+    }
   }
 
   std::vector<vertex_descriptor> live_vertices_in_order() const
@@ -552,7 +588,15 @@ private:
     std::sort(was.begin(), was.end());
     std::sort(is.begin(), is.end());
     cancelled = is.size() < was.size();
-    return std::includes(was.begin(), was.end(), is.begin(), is.end());
+    if(!std::includes(was.begin(), was.end(), is.begin(), is.end())) return false;
+    // and the sectors of the feature vertices
+    sector_codes_after.clear();
+    for(vertex_descriptor v : vertex_order)
+      if(known(v).alive && !is_border_vertex(v, pm)) sector_codes(v, sector_codes_after);
+    std::sort(sector_codes_before.begin(), sector_codes_before.end());
+    std::sort(sector_codes_after.begin(), sector_codes_after.end());
+    return std::includes(sector_codes_before.begin(), sector_codes_before.end(),
+                         sector_codes_after.begin(), sector_codes_after.end());
   }
 
   // the singular vertices of the scar that are new or changed, assigned to the source and the target
