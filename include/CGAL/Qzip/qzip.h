@@ -407,7 +407,8 @@ every feature curve keeps its number of edges; a vertex on a feature keeps its p
 place of the feature vertex it replaces); afterwards the valences of every vertex the surgery touched are compared with the
 ones before: the irregular valences after must form a sub-multiset of those before (no singularity is
 created; a path passing other singularities may cancel complementary pairs of them), border and feature
-vertices are compared by their defect (the number of quads each should have is frozen before the chain), and
+vertices are compared by their defect (the number of quads each should have is frozen before the chain; feature
+vertices also sector by sector, between consecutive constrained edges), and
 no interior vertex may reach the border unless a border vertex was merged into it. If an operation cannot be
 applied or the check fails, everything done is rolled back and
 the mesh is combinatorially and geometrically as before (re-created elements may have new descriptors).
