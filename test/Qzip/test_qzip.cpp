@@ -2,6 +2,7 @@
 #include "qzip_test_utils.h"
 #include "reverse_qzip_tests.h"
 #include "qzip_border_end_tests.h"
+#include "qzip_feature_end_tests.h"
 
 #include <CGAL/Qzip/qzip.h>
 #include <CGAL/Qzip/preprocess.h>
@@ -1231,6 +1232,7 @@ int main(int argc, char** argv)
 
   test_reverse_qzip(per_mesh / 3);
   test_border_defect_reverse();
+  test_feature_end_moves();
 
   Counters random_sm, random_ph;
   for(const std::string f : { "data/polylap_amo_quad.off", "data/pmp_fandisk_quads.off", "data/polylap_suzanne_half.obj",

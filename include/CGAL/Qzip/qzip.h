@@ -182,6 +182,7 @@ class Reverse_recorder
   halfedge_descriptor last_split = GT::null_halfedge();
   vertex_descriptor last_split_vertex = GT::null_vertex();
   std::size_t last_split_position = npos;
+  bool last_split_complement = false; // the new vertex took the fan on the right of the path (Chain_executor::run_chain())
   vertex_descriptor valence_6 = GT::null_vertex(); // made by the last prelude collapse, checked after it
 
   // names the copies of the previous split, once it is done: it returned h2 = d->v on the new quad
@@ -191,7 +192,8 @@ class Reverse_recorder
     if(last_split == GT::null_halfedge()) return;
     const vertex_descriptor made = target(next(next(last_split, pm), pm), pm);
     for(const Created_vertex& cv : plan.created_vertices)
-      if(cv.split == last_split_position) created_names[cv.index] = cv.new_vertex ? made : last_split_vertex;
+      if(cv.split == last_split_position)
+        created_names[cv.index] = cv.new_vertex != last_split_complement ? made : last_split_vertex;
     last_split = GT::null_halfedge();
   }
 
@@ -284,13 +286,18 @@ public:
     check_valence_6();
     const std::size_t k = operations_seen++;
     const std::size_t j = chain_step(k);
-    if(j != npos) reverse_ops[j] = Strip_operation::LEFT_COLLAPSE;
+    // the inverse collapses the new quad keeping path[j]: it lies on the right of path[j+1] -> path[j]
+    // (LC), or on its left after a complementary split at a feature vertex (Chain_executor::run_chain()),
+    // which splits between the guide and the path edge
+    const bool complement = j != npos && names[j + 1] != GT::null_vertex() && source(h1, pm) != names[j + 1];
+    if(j != npos) reverse_ops[j] = complement ? Strip_operation::RIGHT_COLLAPSE : Strip_operation::LEFT_COLLAPSE;
     if(k < plan.prelude.size() || j != npos)
     {
       if(!plan.created_vertices.empty())
       {
         last_split = h2;
         last_split_vertex = target(h1, pm);
+        last_split_complement = complement;
         last_split_position = k < plan.prelude.size() ? plan.path.size() + k : j;
       }
     }
@@ -394,11 +401,16 @@ introducing two v3; a valence-6 vertex left where two v5 merged is split into tw
 introducing two v5).
 
 Every operation is checked before it is applied (link condition, border, constrained edges and
-protected faces); afterwards the valences of every vertex the surgery touched are compared with the
+protected faces: a collapse never removes a constrained edge nor merges two vertices that are each on a
+feature or on the border, a split keeps all the constrained edges of a vertex on one of its copies, so that
+every feature curve keeps its number of edges; a vertex on a feature keeps its place, or takes exactly the
+place of the feature vertex it replaces); afterwards the valences of every vertex the surgery touched are compared with the
 ones before: the irregular valences after must form a sub-multiset of those before (no singularity is
-created; a path passing other singularities may cancel complementary pairs of them), border vertices are
-compared by their defect (the number of quads each should have is frozen before the chain), and no interior
-vertex may reach the border unless a border vertex was merged into it. If an operation cannot be applied or the check fails, everything done is rolled back and
+created; a path passing other singularities may cancel complementary pairs of them), border and feature
+vertices are compared by their defect (the number of quads each should have is frozen before the chain; feature
+vertices also sector by sector, between consecutive constrained edges), and
+no interior vertex may reach the border unless a border vertex was merged into it. If an operation cannot be
+applied or the check fails, everything done is rolled back and
 the mesh is combinatorially and geometrically as before (re-created elements may have new descriptors).
 
 \tparam PolygonMesh a model of `MutableFaceGraph`

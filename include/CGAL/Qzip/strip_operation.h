@@ -61,7 +61,7 @@ enum class Plan_status
 {
   REALIZABLE,            ///< the plan can be executed
   INVALID_PATH,          ///< the path is not a simple edge path of at least one edge
-  UNSUPPORTED_ENDPOINT,  ///< an end of the path is not an interior vertex of valence 3 or 5 (nor, for the terminal one, a border defect +1 or -1 on a straight piece of border)
+  UNSUPPORTED_ENDPOINT,  ///< an end of the path is not an interior vertex of valence 3 or 5 (nor, for the terminal one, a supported border defect, or a feature defect whose other sectors are regular; see `plan_qzip()`)
   ENDPOINT_ADJUSTMENT,   ///< an end-point adjustment needs a vertex on the border
   NOT_SIMPLE_AFTER_ADJUSTMENT, ///< the adjusted path is not simple
   NOTHING_TO_DO,         ///< the adjusted plan has no collapse and no split (e.g. two adjacent v3 and a split motion)
@@ -81,8 +81,8 @@ enum class Execution_failure
 {
   NONE,                 ///< not rolled back
   PATH_EDGE_MISSING,    ///< an edge of the path disappeared on the way
-  COLLAPSE_REFUSED,     ///< a collapse would break the mesh (link condition, border, feature, protected face, not a quad)
-  SPLIT_REFUSED,        ///< a split would touch a feature or a protected face
+  COLLAPSE_REFUSED,     ///< a collapse would break the mesh (link condition, border, protected face, not a quad) or a feature curve (remove a constrained edge, merge two feature or border vertices)
+  SPLIT_REFUSED,        ///< a split would touch a protected face, or separate the constrained edges of a feature vertex
   NO_GUIDE_FOR_SPLIT,   ///< a split has no guide edge distinct from the next path edge
   CLEANUP_IMPOSSIBLE,   ///< a valence-2 or valence-6 vertex left by the chain could not be cleaned up
   SINGULARITY_CREATED   ///< the chain completed but created a singularity or changed the border

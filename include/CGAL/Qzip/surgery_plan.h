@@ -15,6 +15,7 @@
 #include <CGAL/Qzip/Named_function_parameters.h>
 #include <CGAL/Qzip/internal/rotation.h>
 #include <CGAL/Qzip/internal/endpoint_preparation.h>
+#include <CGAL/Qzip/internal/vertex_defect.h>
 #include <CGAL/Qzip/singularities.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -23,6 +24,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <array>
 #include <type_traits>
 #include <vector>
@@ -227,9 +229,12 @@ plans a Q-zip along `sketch`, a simple edge path from the initial singularity `s
 interior vertex of valence 3 or 5) to the terminal singularity `sketch.back()` (the same, or a border
 vertex with one quad too many on a straight piece of border or at a corner, whose defect then moves by
 one border edge, or with one quad too few on a straight piece of border, reached along the border, or at
-a concave corner; see the user manual, "Border End Points"), with `initial_operation` as the compass at
+a concave corner; see the user manual, "Border End Points"; or a feature defect: a vertex of a constrained edge,
+away from the border, with one quad too many or too few in the sector between two constrained edges that the
+last edge of the sketch arrives in, its other sectors regular, prepared like a border end in that sector, see
+the user manual, "Feature End Points"), with `initial_operation` as the compass at
 the initial singularity (one of the four motions of the pair). When `sketch.front()` is such a border
-vertex and `sketch.back()` an interior one, the plan is that of the reversed sketch: the chain starts at
+(or feature) vertex and `sketch.back()` an interior one, the plan is that of the reversed sketch: the chain starts at
 the interior singularity (`plan.source == sketch.back()`), and `initial_operation` is the compass there.
 
 The compass is parallel-transported along the path (paper, Sec. 2.5): straight keeps the tag, a left
@@ -255,7 +260,8 @@ The mesh is not modified.
 \param np optional named parameters among:
 \cgalNamedParamsBegin
   \cgalParamNBegin{edge_is_constrained_map}
-    \cgalParamDescription{feature edges: no path vertex may be incident to one}
+    \cgalParamDescription{feature edges: no path vertex may be incident to one, but a feature target and its
+                          continuation along the feature}
     \cgalParamDefault{no edge is constrained}
   \cgalParamNEnd
   \cgalParamNBegin{face_is_constrained_map}
@@ -304,15 +310,21 @@ plan_qzip(const PolygonMesh& pm,
   plan.sketch = sketch;
   plan.initial_operation = initial_operation;
   if(!internal::is_simple_edge_path(sketch, pm)) { plan.status = Plan_status::INVALID_PATH; return plan; }
-  // a border source: the chain starts inside, so this is the plan of the reversed sketch, and
+  auto on_feature = [&](vertex_descriptor v)
+  {
+    for(auto h : halfedges_around_target(halfedge(v, pm), pm)) if(get(ecm, edge(h, pm))) return true;
+    return false;
+  };
+  auto on_cut = [&](vertex_descriptor v) { return internal::is_border_vertex(v, pm) || on_feature(v); };
+  // a border (or feature) source: the chain starts inside, so this is the plan of the reversed sketch, and
   // `initial_operation` is the compass at its start, the interior singularity sketch.back()
-  if(internal::is_border_vertex(sketch.front(), pm) && !internal::is_border_vertex(sketch.back(), pm))
+  if(on_cut(sketch.front()) && !on_cut(sketch.back()))
     return plan_qzip(pm, std::vector<vertex_descriptor>(sketch.rbegin(), sketch.rend()), initial_operation, np);
   plan.source = sketch.front();
   plan.target = sketch.back();
   plan.source_valence = int(internal::valence(plan.source, pm));
   plan.target_valence = int(internal::valence(plan.target, pm));
-  if((plan.source_valence != 3 && plan.source_valence != 5) || internal::is_border_vertex(plan.source, pm))
+  if((plan.source_valence != 3 && plan.source_valence != 5) || on_cut(plan.source))
   { plan.status = Plan_status::UNSUPPORTED_ENDPOINT; return plan; }
   // a border target is supported on a straight piece of border (two quads expected, three present);
   // its defect moves to a border neighbour on a straight piece too, or cancels the defect of a
@@ -326,12 +338,34 @@ plan_qzip(const PolygonMesh& pm,
     });
   };
   const bool border_target = internal::is_border_vertex(plan.target, pm);
+  // a feature target (interior, on a constrained edge) is judged in the sector its last sketch edge
+  // arrives in (see `feature_end_sector` below): the other sectors must be regular
+  const bool feature_target = !border_target && on_feature(plan.target);
   const std::pair<int, int> target_defect = border_target ? defect_and_expected_faces(plan.target) : std::make_pair(0, 0);
-  const bool quad_too_few = target_defect.first == -1;
+  bool quad_too_few = target_defect.first == -1;
   const bool target_supported = border_target ? internal::Endpoint_preparation<PolygonMesh>::is_supported_border_end(
                                                   target_defect.first, target_defect.second)
-                                              : (plan.target_valence == 3 || plan.target_valence == 5);
+                                              : (feature_target || plan.target_valence == 3 || plan.target_valence == 5);
   if(!target_supported) { plan.status = Plan_status::UNSUPPORTED_ENDPOINT; return plan; }
+  // the faces of the sector of the feature target that the path arrives in, and the defect of that sector
+  // (faces, expected faces); the path may not arrive along a constrained edge
+  std::vector<face_descriptor> feature_end_sector;
+  auto sector_of_feature_end = [&](vertex_descriptor u, vertex_descriptor t, std::pair<int, int>& defect)
+  {
+    const auto ut = halfedge(u, t, pm).first;
+    if(get(ecm, edge(ut, pm))) return Plan_status::ENDPOINT_ADJUSTMENT;
+    feature_end_sector.clear();
+    const internal::Sector_info sector = internal::with_defect_parameters(pm, np, [&](const auto& vpm, const auto& ecm_, const auto& gt)
+    {
+      return internal::sector_info(ut, pm, vpm, ecm_, gt,
+                                   [&](face_descriptor f) { feature_end_sector.push_back(f); });
+    });
+    defect = std::make_pair(sector.faces - sector.expected_faces, sector.expected_faces);
+    if(!sector.bounded || defect_and_expected_faces(t).first != defect.first ||
+       !internal::Endpoint_preparation<PolygonMesh>::is_supported_border_end(defect.first, defect.second))
+      return Plan_status::UNSUPPORTED_ENDPOINT;
+    return Plan_status::REALIZABLE;
+  };
 
   plan.path = sketch;
   plan.operations.assign(sketch.size(), Strip_operation::NO_OPERATION);
@@ -352,14 +386,27 @@ plan_qzip(const PolygonMesh& pm,
   if(st == Plan_status::REALIZABLE && retransport_from > 0)
     internal::transport_compass(plan.path, plan.operations, (std::min)(retransport_from, first_fold + 1), pm);
   const Strip_operation start_tag = plan.operations[0];
-  if(st == Plan_status::REALIZABLE)
+  if(st == Plan_status::REALIZABLE && feature_target)
+  {
+    std::pair<int, int> sector_defect;
+    st = sector_of_feature_end(plan.path[plan.path.size() - 2], plan.target, sector_defect);
+    quad_too_few = sector_defect.first == -1;
+    auto outside_sector = [&](auto h)
+    {
+      return is_border(h, pm) ||
+             std::find(feature_end_sector.begin(), feature_end_sector.end(), face(h, pm)) == feature_end_sector.end();
+    };
+    if(st == Plan_status::REALIZABLE)
+      st = prep.prepare_sector_end(plan.path, plan.operations, quad_too_few, sector_defect.second, outside_sector);
+  }
+  else if(st == Plan_status::REALIZABLE)
     st = border_target ? prep.prepare_border_end(plan.path, plan.operations, quad_too_few, target_defect.second)
                        : prep.prepare_end(plan.path, plan.operations, initial_operation, transport);
   if(st == Plan_status::REALIZABLE && plan.path[0] == plan.source && plan.operations[0] != start_tag &&
      is_split(plan.operations[0]))
     st = prep.prepare_start(plan.path, plan.operations, retransport_from);
   if(st == Plan_status::REALIZABLE) st = prep.remove_folds(plan.path, plan.operations, first_fold);
-  if(st == Plan_status::REALIZABLE && border_target && !quad_too_few)
+  if(st == Plan_status::REALIZABLE && (border_target || feature_target) && !quad_too_few)
   {
     const std::pair<int, int> e = defect_and_expected_faces(plan.path.back()); // regular, or one quad short: cancels
     if(e.first != 0 && e.first != -1) st = Plan_status::ENDPOINT_ADJUSTMENT;
@@ -380,10 +427,15 @@ plan_qzip(const PolygonMesh& pm,
   // continuation.
   // (faces that are not quads may be next to the path: no collapse is ever attempted on them, splits
   // keep their degree, and the executor checks every operation)
+  // A feature target and its continuation lie on constrained edges (the executor keeps every constrained
+  // edge whole, on one copy of a split vertex).
   for(vertex_descriptor v : plan.path)
+  {
+    const bool feature_end = feature_target && (v == plan.target || v == plan.path.back());
     for(auto h : halfedges_around_target(halfedge(v, pm), pm))
-      if(get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm))))
+      if((!feature_end && get(ecm, edge(h, pm))) || (!is_border(h, pm) && get(fcm, face(h, pm))))
       { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
+  }
   // each collapse, as far as the mesh before execution tells (the executor refuses these collapses
   // anyway, but only after the chain has started): at a path vertex on the border it must be on the side
   // of the mesh; its far corner (the vertex merged away) may not be a vertex the path has still to visit

@@ -26,6 +26,7 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -108,6 +109,10 @@ class Chain_executor
   std::vector<face_descriptor> face_order;
   std::vector<vertex_descriptor> candidates; // of the clean-up
   std::vector<int> codes_before, codes_after; // of the singularity check
+  // the sectors of feature vertices (see sector_codes()): their frozen numbers of quads, named by the
+  // constrained halfedge that starts them, and the codes of the irregular ones before and after
+  Descriptor_hash_map<halfedge_descriptor, int> sector_ideals;
+  std::vector<int> sector_codes_before, sector_codes_after;
   std::size_t collapses = 0, splits = 0, cleanups = 0;
 
 public:
@@ -197,6 +202,8 @@ private:
     face_states.clear();
     vertex_order.clear();
     face_order.clear();
+    sector_ideals.clear();
+    sector_codes_before.clear();
     collapses = splits = cleanups = 0;
     cancelled = false;
   }
@@ -235,6 +242,35 @@ private:
     s.before = Before{ a.border, code };
     s.alive = true;
     list(v);
+    if(!a.border) sector_codes(v, sector_codes_before);
+  }
+
+  // A vertex on a feature, away from the border, is also judged sector by sector (its defect is the sum of
+  // its sectors'; a surgery must not trade a quad of one sector for a quad of another): the codes
+  // 100 + defect of its irregular sectors. A sector is named by the incoming halfedge of the constrained
+  // edge that starts it counterclockwise (constrained edges keep their halfedges through every operation),
+  // and its number of quads is frozen from the geometry at the first look, as the vertex's.
+  void sector_codes(vertex_descriptor v, std::vector<int>& out)
+  {
+    if constexpr(std::is_same<ECM, Static_boolean_property_map<edge_descriptor, false> >::value) return;
+    halfedge_descriptor start = GT::null_halfedge();
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      if(get(ecm, edge(h, pm))) { start = h; break; }
+    if(start == GT::null_halfedge()) return;
+    halfedge_descriptor first = start;
+    int faces = 0;
+    double theta = 0;
+    for(halfedge_descriptor h : halfedges_around_target(start, pm)) // face(h) between edge(h) and edge(next(h))
+    {
+      theta += corner_angle(h, pm, log_vpm(), Geom_traits());
+      ++faces;
+      if(!get(ecm, edge(next(h, pm), pm))) continue;
+      const int ideal = *sector_ideals.insert(first, internal::ideal_number_of_faces(theta)).first;
+      if(faces != ideal) out.push_back(100 + faces - ideal);
+      first = opposite(next(h, pm), pm);
+      faces = 0;
+      theta = 0;
+    }
   }
 
   std::vector<vertex_descriptor> live_vertices_in_order() const
@@ -251,36 +287,76 @@ private:
       if(known(v).alive) out.push_back(v);
   }
 
-  bool constrained_around(vertex_descriptor v) const
+  bool protected_around(vertex_descriptor v) const
   {
     for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-      if(get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm)))) return true;
+      if(!is_border(h, pm) && get(fcm, face(h, pm))) return true;
     return false;
   }
+
+  bool on_feature(vertex_descriptor v) const
+  {
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      if(get(ecm, edge(h, pm))) return true;
+    return false;
+  }
+
+  // Constrained edges stay whole, and feature curves keep their number of edges: a collapse may not remove
+  // one (b-c, c-d) nor merge two vertices that are each on a feature or on the border (the constrained
+  // edges of the removed vertex move to the kept one, which takes its place on the feature); a split moves
+  // all the constrained edges of the split vertex to the new one, or none, and may not split a vertex that
+  // is on a feature and on the border. A feature vertex that is kept, or that takes the place of another,
+  // stays where that one was (as on the border, see Operation_log): the feature curves keep their shape.
 
   // collapses face(h), keeping target(h); checks everything first.
   bool collapse(halfedge_descriptor h)
   {
     if(is_border(h, pm) || !can_collapse_quad(h, pm)) return false;
     const vertex_descriptor a = target(h, pm), b = target(next(h, pm), pm);
-    const vertex_descriptor c = target(next(next(h, pm), pm), pm), d = source(h, pm);
-    if(constrained_around(a) || constrained_around(c)) return false;
+    const halfedge_descriptor bc = next(next(h, pm), pm);
+    const vertex_descriptor c = target(bc, pm), d = source(h, pm);
+    if(protected_around(a) || protected_around(c)) return false;
+    const bool a_on_feature = on_feature(a), c_on_feature = on_feature(c);
+    if(get(ecm, edge(bc, pm)) || get(ecm, edge(next(bc, pm), pm)) ||
+       ((a_on_feature || is_border_vertex(a, pm)) && (c_on_feature || is_border_vertex(c, pm))))
+      return false;
     touch(a); touch(b); touch(c); touch(d);
     visitor.on_collapse(h, pm);
     face_state(face(h, pm)).scar = false;
     // a border c merged into an interior a (can_collapse_quad() refuses two border vertices): the merged
-    // vertex takes the place of c on the border, with the number of quads c should have
+    // vertex takes the place of c on the border, with the number of quads c should have; likewise on a feature
     if(is_border_vertex(c, pm) && !is_border_vertex(a, pm))
     {
       set_ideal(a, ideal_number_of_faces(c));
       state(a).took_border = true;
     }
+    if(c_on_feature) set_ideal(a, ideal_number_of_faces(c));
+    const Point kept_at = get(log_vpm(), a), removed_at = get(log_vpm(), c);
     Vertex_state& removed = state(c);
     removed.alive = false;
     removed.created = false;
     last_delimiters = log.collapse(h);
+    if(c_on_feature) put(log_vpm(), a, removed_at);
+    else if(a_on_feature) put(log_vpm(), a, kept_at);
     ++collapses;
     return true;
+  }
+
+  // the number of constrained edges of target(h1) that its split between h1 and h2 moves to the new vertex
+  // (those strictly counterclockwise between v->b and v->d), and the number of all its constrained edges
+  std::pair<int, int> constrained_edges_moved(halfedge_descriptor h1, halfedge_descriptor h2) const
+  {
+    int constrained = 0, moving = 0;
+    for(halfedge_descriptor h : halfedges_around_target(h1, pm)) if(get(ecm, edge(h, pm))) ++constrained;
+    for(halfedge_descriptor o = ccw(opposite(h1, pm), pm); o != opposite(h2, pm); o = ccw(o, pm))
+      if(get(ecm, edge(o, pm))) ++moving;
+    return std::make_pair(moving, constrained);
+  }
+
+  bool keeps_constraints_whole(halfedge_descriptor h1, halfedge_descriptor h2) const
+  {
+    const std::pair<int, int> m = constrained_edges_moved(h1, h2);
+    return m.first == 0 || m.first == m.second;
   }
 
   // splits target(h1) between h1 and h2 (see split_vertex_into_quad()); checks everything first.
@@ -288,9 +364,13 @@ private:
   {
     if(!can_split_vertex_into_quad(h1, h2, pm)) return false;
     const vertex_descriptor v = target(h1, pm);
-    if(constrained_around(v)) return false;
+    if(protected_around(v)) return false;
+    const std::pair<int, int> constrained_moved = constrained_edges_moved(h1, h2);
+    const int moving = constrained_moved.first, constrained = constrained_moved.second;
+    if((moving != 0 && moving != constrained) || (constrained != 0 && is_border_vertex(v, pm))) return false;
     touch(v); touch(source(h1, pm)); touch(source(h2, pm));
     visitor.on_split(h1, h2, pm);
+    const Point split_at = get(log_vpm(), v);
     last_quad = log.split(h1, h2);
     const vertex_descriptor c = target(next(next(last_quad, pm), pm), pm);
     {
@@ -298,8 +378,9 @@ private:
       s.alive = true;
       s.created = true;
     }
-    // a copy on the border takes the place of v there (v was on the border), with its number of quads
-    if(is_border_vertex(c, pm)) set_ideal(c, ideal_number_of_faces(v));
+    // a copy on the border (or on a feature) takes the place of v there, with its number of quads
+    if(is_border_vertex(c, pm) || moving != 0) set_ideal(c, ideal_number_of_faces(v));
+    if(constrained != 0) put(log_vpm(), moving != 0 ? c : v, split_at);
     list(c);
     face_state(face(last_quad, pm)).scar = true;
     list(face(last_quad, pm));
@@ -373,12 +454,35 @@ private:
         case Strip_operation::RIGHT_SPLIT:
           if(guide == GT::null_halfedge() || guide == o || source(guide, pm) != P[j])
           { failure = Execution_failure::NO_GUIDE_FOR_SPLIT; return false; }
-          if(!split(opposite(o, pm), opposite(guide, pm))) { failure = Execution_failure::SPLIT_REFUSED; return false; }
-          // the new vertex took the fan counterclockwise from o, on the left of the path
-          if(!plan.created_vertices.empty()) name_created(plan, j, P[j], target(next(next(last_quad, pm), pm), pm));
-          guide = plan.operations[j] == Strip_operation::LEFT_SPLIT ? next(next(last_quad, pm), pm)
-                                                                    : opposite(o, pm);
+        {
+          halfedge_descriptor h1 = opposite(o, pm), h2 = opposite(guide, pm);
+          // At a feature vertex (the feature target of a chain, or a vertex of a reverse Q-zip that moved a
+          // feature defect) the split may have to be done the other way round. Its two copies are the same
+          // whichever of them keeps the descriptor and the old edges v-w and v-y (w = P[j+1], y the end of the
+          // guide), but only that one can keep a constrained edge among them. The direct split moves the fan
+          // strictly counterclockwise from v->w to v->y (on the left of the path) to the new vertex c, the
+          // complementary one the fan from v->y to v->w (on its right):
+          //
+          //               other sector
+          //      x ========== v ========== w      direct: the fan from v->w to v->y, with v-x, moves to c:
+          //                   |\                          x == c and v == w, the curve is cut
+          //                   | \  the fan from    complementary: x == v == w, the new quad (v, y, c, w)
+          //                   y    v->y to v->w             lies in the sector of y
+          //
+          // Both give the same mesh; the guide left is the same edge of it: w->(left copy) after LS,
+          // w->(right copy) after RS.
+          const bool complement = !keeps_constraints_whole(h1, h2) && keeps_constraints_whole(h2, h1);
+          if(complement) std::swap(h1, h2);
+          if(!split(h1, h2)) { failure = Execution_failure::SPLIT_REFUSED; return false; }
+          // the new vertex took the fan on the left of the path (on its right after the complementary
+          // split, where P[j] keeps the left one)
+          const vertex_descriptor made = target(next(next(last_quad, pm), pm), pm);
+          if(!plan.created_vertices.empty()) name_created(plan, j, complement ? made : P[j], complement ? P[j] : made);
+          const bool left = plan.operations[j] == Strip_operation::LEFT_SPLIT;
+          if(!complement) guide = left ? next(next(last_quad, pm), pm) : opposite(o, pm);
+          else guide = left ? opposite(o, pm) : opposite(prev(last_quad, pm), pm);
           break;
+        }
       }
     }
     return true;
@@ -391,7 +495,7 @@ private:
     collect_live_vertices(candidates);
     for(vertex_descriptor v : candidates)
     {
-      if(!known(v).alive || is_border_vertex(v, pm)) continue;
+      if(!known(v).alive || is_border_vertex(v, pm) || on_feature(v)) continue;
       const std::size_t d = valence(v, pm);
       if(d == 2 && !remove_valence_2(v)) return false;
       if(d == 6 && !split_valence_6(v)) return false;
@@ -484,7 +588,15 @@ private:
     std::sort(was.begin(), was.end());
     std::sort(is.begin(), is.end());
     cancelled = is.size() < was.size();
-    return std::includes(was.begin(), was.end(), is.begin(), is.end());
+    if(!std::includes(was.begin(), was.end(), is.begin(), is.end())) return false;
+    // and the sectors of the feature vertices
+    sector_codes_after.clear();
+    for(vertex_descriptor v : vertex_order)
+      if(known(v).alive && !is_border_vertex(v, pm)) sector_codes(v, sector_codes_after);
+    std::sort(sector_codes_before.begin(), sector_codes_before.end());
+    std::sort(sector_codes_after.begin(), sector_codes_after.end());
+    return std::includes(sector_codes_before.begin(), sector_codes_before.end(),
+                         sector_codes_after.begin(), sector_codes_after.end());
   }
 
   // the singular vertices of the scar that are new or changed, assigned to the source and the target

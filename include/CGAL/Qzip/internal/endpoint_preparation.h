@@ -167,27 +167,43 @@ public:
   // neighbour after a collapse, and the rule of a straight border applies; after a split nothing moved
   // the defect, and along the border the straight rule worked for some arrivals only (the others roll
   // back, for a reason we have not characterised): both are refused.
+  //
+  // A feature end (a vertex of a constrained edge) is prepared by the same rules in the sector of its fan
+  // that the path arrives in (prepare_sector_end()): the other sectors play the part of the border gap,
+  // and the constrained edges that bound the sector that of the border edges. plan_qzip() refuses feature
+  // ends reached along a constrained edge, so only the rules for arrivals from the inside apply there.
   Plan_status prepare_border_end(Path& path, Operations& ops, bool quad_too_few, int expected_faces) const
   {
+    return prepare_sector_end(path, ops, quad_too_few, expected_faces,
+                              [this](halfedge_descriptor h) { return is_border(h, pm); });
+  }
+
+  // the same, where `gap(h)` tells whether `face(h)` lies outside the fan of the end (the border face, or a
+  // face of another sector)
+  template <typename Gap>
+  Plan_status prepare_sector_end(Path& path, Operations& ops, bool quad_too_few, int expected_faces,
+                                 const Gap& gap) const
+  {
+    auto is_cut = [&](halfedge_descriptor h) { return gap(h) || gap(opposite(h, pm)); };
     const std::size_t n = path.size();
     const vertex_descriptor t = path[n - 1], u = path[n - 2];
     const Strip_operation last = ops[n - 2];
     if(last == Strip_operation::NO_OPERATION) return Plan_status::ENDPOINT_ADJUSTMENT;
     const halfedge_descriptor ut = out(u, t);
     const bool concave = expected_faces == 3;
-    if(concave && is_border_edge(ut, pm)) return Plan_status::ENDPOINT_ADJUSTMENT;
-    if(expected_faces == 1 && (is_border_edge(ut, pm) || is_split(last))) return Plan_status::ENDPOINT_ADJUSTMENT;
+    if(concave && is_cut(ut)) return Plan_status::ENDPOINT_ADJUSTMENT;
+    if(expected_faces == 1 && (is_cut(ut) || is_split(last))) return Plan_status::ENDPOINT_ADJUSTMENT;
     if(quad_too_few)
     {
       if(concave) return is_collapse(last) ? Plan_status::REALIZABLE : Plan_status::ENDPOINT_ADJUSTMENT;
-      if(!is_border_edge(ut, pm)) return Plan_status::ENDPOINT_ADJUSTMENT;
-      const bool mesh_on_left = !is_border(ut, pm);
+      if(!is_cut(ut)) return Plan_status::ENDPOINT_ADJUSTMENT;
+      const bool mesh_on_left = !gap(ut);
       return last == (mesh_on_left ? Strip_operation::RIGHT_SPLIT : Strip_operation::LEFT_SPLIT)
                ? Plan_status::REALIZABLE : Plan_status::ENDPOINT_ADJUSTMENT;
     }
-    if(is_border_edge(ut, pm))
+    if(is_cut(ut))
     {
-      const bool mesh_on_left = !is_border(ut, pm);
+      const bool mesh_on_left = !gap(ut);
       if(last != (mesh_on_left ? Strip_operation::LEFT_SPLIT : Strip_operation::RIGHT_SPLIT))
         return Plan_status::ENDPOINT_ADJUSTMENT;
       // the other border edge at t, across the border gap from t->u
@@ -198,12 +214,24 @@ public:
       return Plan_status::REALIZABLE;
     }
     const bool counts_left = last == Strip_operation::LEFT_SPLIT || last == Strip_operation::RIGHT_COLLAPSE;
-    const int deg = int(valence(t, pm));
+    // the rotations around t count the faces of its fan and the gap as one step each: turning
+    // counterclockwise from the outgoing halfedge h across the gap (a feature end: the other sectors)
+    // leads to the first halfedge whose face is in the fan again
+    int deg = 1;
+    for(halfedge_descriptor h : halfedges_around_source(t, pm)) if(!gap(h)) ++deg;
+    auto ccw_in_fan = [&](halfedge_descriptor h)
+    {
+      const bool across_gap = gap(h);
+      h = ccw(h, pm);
+      while(across_gap && gap(h)) h = ccw(h, pm);
+      return h;
+    };
     const int k = last == Strip_operation::RIGHT_COLLAPSE ? 1
                 : last == Strip_operation::LEFT_COLLAPSE ? deg - 1
                 : (concave && last == Strip_operation::RIGHT_SPLIT ? deg - 2 : 2);
-    const halfedge_descriptor te = rotate_outgoing(opposite(ut, pm), k, pm);
-    if(concave && is_split(last) ? !is_border_edge(te, pm) : !is_border(counts_left ? te : opposite(te, pm), pm))
+    halfedge_descriptor te = opposite(ut, pm);
+    for(int step = 0; step < k; ++step) te = ccw_in_fan(te);
+    if(concave && is_split(last) ? !is_cut(te) : !gap(counts_left ? te : opposite(te, pm)))
       return Plan_status::ENDPOINT_ADJUSTMENT;
     path.push_back(target(te, pm));
     ops[n - 1] = is_collapse(last) ? rotate(last, 2) : last;

@@ -123,6 +123,47 @@ vertex_defect_info(typename boost::graph_traits<PolygonMesh>::vertex_descriptor 
   return info;
 }
 
+// The sector of a vertex that contains a face: the faces between the two cut edges (border or constrained)
+// that bound it around the vertex, and the number of quads a regular vertex has there.
+struct Sector_info
+{
+  int faces = 0;
+  int expected_faces = 0;
+  bool bounded = false; // false when no cut edge bounds the fan (the whole fan, `faces` and `expected_faces` are 0)
+};
+
+// The sector of `target(h, pm)` that contains `face(h, pm)` (`h` is not a border halfedge), walked as in
+// vertex_defect_info(): `face(h_i)` lies between `edge(h_i)` and `edge(next(h_i))`, the next incoming halfedge
+// is `opposite(next(h_i))` and the previous one `prev(opposite(h_i))`. When `in_sector` is not null, it
+// receives the faces of the sector.
+template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap, typename GeomTraits,
+          typename FaceOutput>
+Sector_info sector_info(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
+                        const PolygonMesh& pm, const VertexPointMap& vpm,
+                        const EdgeIsConstrainedMap& ecm, const GeomTraits& gt, FaceOutput in_sector)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
+  auto is_cut = [&](halfedge_descriptor x) -> bool { return is_border_edge(x, pm) || get(ecm, edge(x, pm)); };
+  Sector_info info;
+  halfedge_descriptor first = h;
+  while(!is_cut(first))
+  {
+    first = prev(opposite(first, pm), pm);
+    if(first == h) return info;
+  }
+  info.bounded = true;
+  double theta = 0;
+  for(halfedge_descriptor x = first;; x = opposite(next(x, pm), pm))
+  {
+    theta += corner_angle(x, pm, vpm, gt);
+    ++info.faces;
+    in_sector(face(x, pm));
+    if(is_cut(next(x, pm))) break;
+  }
+  info.expected_faces = ideal_number_of_faces(theta);
+  return info;
+}
+
 } // namespace internal
 } // namespace Qzip
 } // namespace CGAL

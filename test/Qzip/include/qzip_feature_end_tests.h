@@ -1,0 +1,556 @@
+// Tests of feature end points: Q-zips from an interior singularity to a vertex on a feature curve (a vertex
+// of a constrained edge) with one quad too many or too few in the sector the path arrives in. Every done
+// Q-zip keeps the invariants, the feature edges, and is undone by its history and by its reverse Q-zip.
+#ifndef QZIP_FEATURE_END_TESTS_H
+#define QZIP_FEATURE_END_TESTS_H
+
+#include "qzip_test_utils.h"
+#include "reverse_qzip_tests.h"
+#include "qzip_border_end_tests.h"
+
+#include <CGAL/Qzip/qzip.h>
+#include <CGAL/Qzip/singularities.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace qzip_test {
+
+typedef Surface_mesh::Property_map<boost::graph_traits<Surface_mesh>::edge_descriptor, bool> Feature_map;
+typedef std::set<std::pair<Point, Point> > Feature_segments; // the feature edges by the positions of their ends
+
+inline std::pair<Point, Point> segment_key(const Point& a, const Point& b) { return std::minmax(a, b); }
+
+/// the feature map of `m` ("e:qzip_test_feature"), set on the edges whose ends are at the positions of `segments`
+inline Feature_map mark_features(Surface_mesh& m, const Feature_segments& segments)
+{
+  Feature_map f = m.add_property_map<Surface_mesh::Edge_index, bool>("e:qzip_test_feature", false).first;
+  for(auto e : edges(m))
+  {
+    const auto h = halfedge(e, m);
+    put(f, e, segments.count(segment_key(m.point(source(h, m)), m.point(target(h, m)))) > 0);
+  }
+  return f;
+}
+
+/// the feature edges of `m` by the positions of their ends
+inline Feature_segments feature_segments(const Surface_mesh& m, const Feature_map& f)
+{
+  Feature_segments out;
+  for(auto e : edges(m))
+    if(get(f, e)) out.insert(segment_key(m.point(source(halfedge(e, m), m)), m.point(target(halfedge(e, m), m))));
+  return out;
+}
+
+/// the edges of `m` whose dihedral angle exceeds 60 degrees (as test_optimizer's features)
+inline Feature_segments sharp_segments(const Surface_mesh& m, double degrees = 60.)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  Feature_segments out;
+  for(auto e : edges(m))
+  {
+    const auto h = halfedge(e, m);
+    if(is_border_edge(h, m)) continue;
+    const auto n1 = PMP::compute_face_normal(face(h, m), m), n2 = PMP::compute_face_normal(face(opposite(h, m), m), m);
+    if(n1 * n2 < std::cos(degrees * CGAL_PI / 180.)) out.insert(segment_key(m.point(source(h, m)), m.point(target(h, m))));
+  }
+  return out;
+}
+
+inline bool on_feature(Surface_mesh::Vertex_index v, const Surface_mesh& m, const Feature_map& f)
+{
+  for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) if(get(f, edge(h, m))) return true;
+  return false;
+}
+
+/// whether the feature curve turns at `v` by more than 45 degrees, or branches or ends there
+inline bool curve_turns_at(Surface_mesh::Vertex_index v, const Surface_mesh& m, const Feature_map& f)
+{
+  std::vector<Point> ends;
+  for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) if(get(f, edge(h, m))) ends.push_back(m.point(source(h, m)));
+  return ends.size() != 2 || CGAL::approximate_angle(ends[0], m.point(v), ends[1]) < 135.;
+}
+
+/// The invariants of a Q-zip ending at a feature, measured on the whole mesh before it, independently of the
+/// executor: a valid mesh, the same Euler characteristic, quads still quads, the same feature edges between the
+/// same positions (the feature vertices keep their places), and no new singularity by the sector rule: an
+/// interior vertex away from features is judged by its valence; a vertex on a feature or on the border by each
+/// of its sectors (the faces between two consecutive feature or border edges around it), whose number of faces
+/// is compared with the one it should have, frozen before from the geometry (a sector is named by the positions
+/// of its vertex and of its two bounding edges, which the Q-zip does not move).
+class Feature_invariants
+{
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
+  typedef boost::graph_traits<Surface_mesh>::halfedge_descriptor halfedge_descriptor;
+  typedef std::tuple<Point, Point, Point> Sector_key;
+
+  long chi;
+  std::size_t faces = 0;
+  Feature_segments segments;
+  std::map<Sector_key, int> expected;
+  std::vector<int> codes;
+
+  // calls f(key, faces, angle) for every sector of the cut vertex v
+  template <typename F>
+  static void for_each_sector(vertex_descriptor v, const Surface_mesh& m, const Feature_map& fm, F f)
+  {
+    auto is_cut = [&](halfedge_descriptor h) { return is_border_edge(h, m) || get(fm, edge(h, m)); };
+    halfedge_descriptor start = boost::graph_traits<Surface_mesh>::null_halfedge();
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) if(is_cut(h)) { start = h; break; }
+    int q = 0;
+    double theta = 0;
+    halfedge_descriptor first = start;
+    for(auto h : CGAL::halfedges_around_target(start, m))
+    {
+      if(!is_border(h, m))
+      {
+        theta += CGAL::approximate_angle(m.point(source(h, m)), m.point(v), m.point(target(next(h, m), m))) * CGAL_PI / 180.;
+        ++q;
+      }
+      if(is_cut(next(h, m)))
+      {
+        if(q > 0) f(Sector_key(m.point(v), m.point(source(first, m)), m.point(target(next(h, m), m))), q, theta);
+        first = opposite(next(h, m), m);
+        q = 0;
+        theta = 0;
+      }
+    }
+  }
+
+  static bool is_cut_vertex(vertex_descriptor v, const Surface_mesh& m, const Feature_map& fm)
+  { return on_border(v, m) || on_feature(v, m, fm); }
+
+public:
+  Feature_invariants(const Surface_mesh& m, const Feature_map& fm)
+    : chi(euler_characteristic(m)), faces(CGAL::faces(m).size()), segments(feature_segments(m, fm))
+  {
+    for(vertex_descriptor v : vertices(m))
+      if(is_cut_vertex(v, m, fm))
+        for_each_sector(v, m, fm, [&](const Sector_key& k, int, double theta)
+        { expected[k] = CGAL::Qzip::internal::ideal_number_of_faces(theta); });
+    codes = singularity_codes(m, fm);
+  }
+
+  /// the sorted singularity codes: the valence of an irregular interior vertex, 100 + the defect of an
+  /// irregular sector
+  std::vector<int> singularity_codes(const Surface_mesh& m, const Feature_map& fm) const
+  {
+    std::vector<int> out;
+    for(vertex_descriptor v : vertices(m))
+    {
+      if(!is_cut_vertex(v, m, fm)) { if(valence(v, m) != 4) out.push_back(valence(v, m)); continue; }
+      for_each_sector(v, m, fm, [&](const Sector_key& k, int q, double theta)
+      {
+        const auto it = expected.find(k);
+        const int d = q - (it != expected.end() ? it->second : CGAL::Qzip::internal::ideal_number_of_faces(theta));
+        if(d != 0) out.push_back(100 + d);
+      });
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  /// the feature edges by position, as before
+  bool same_features(const Surface_mesh& m, const Feature_map& fm) const { return feature_segments(m, fm) == segments; }
+
+  /// asserts the invariants after a done Q-zip; returns whether singularities were cancelled
+  bool check_after(const Surface_mesh& m, const Feature_map& fm, std::size_t splits, std::size_t collapses) const
+  {
+    assert(CGAL::is_valid_polygon_mesh(m) && all_faces_have_degree(m, 4));
+    assert(euler_characteristic(m) == chi);
+    assert(long(CGAL::faces(m).size()) - long(faces) == long(splits) - long(collapses));
+    assert(same_features(m, fm));
+    const std::vector<int> after = singularity_codes(m, fm);
+    assert(std::includes(codes.begin(), codes.end(), after.begin(), after.end()));
+    return after != codes;
+  }
+};
+
+/// how the Q-zips to feature end points went
+struct Feature_move_counters
+{
+  std::size_t plans = 0, done = 0, cancelling = 0, moved = 0, reversed = 0, rolled_back = 0;
+  std::size_t onto_other_defect = 0; // done moves whose continuation e was itself irregular
+  std::size_t with_quad_too_few = 0, at_turn = 0; // done Q-zips whose target has defect -1, lies where its curve turns
+  std::map<CGAL::Qzip::Plan_status, std::size_t> refused;
+  std::map<CGAL::Qzip::Reverse_qzip_status, std::size_t> no_reverse;
+  std::map<CGAL::Qzip::Execution_failure, std::size_t> predicted; // EXECUTION_WOULD_FAIL, by predicted failure
+  void add(const Feature_move_counters& o)
+  {
+    plans += o.plans; done += o.done; cancelling += o.cancelling; moved += o.moved; reversed += o.reversed;
+    rolled_back += o.rolled_back; onto_other_defect += o.onto_other_defect;
+    with_quad_too_few += o.with_quad_too_few; at_turn += o.at_turn;
+    for(const auto& r : o.refused) refused[r.first] += r.second;
+    for(const auto& r : o.no_reverse) no_reverse[r.first] += r.second;
+    for(const auto& r : o.predicted) predicted[r.first] += r.second;
+  }
+  void print(const std::string& what) const
+  {
+    std::cout << "  " << what << ": " << plans << " plans, " << done << " done (" << cancelling
+              << " cancelling singularities, " << moved << " moving a feature defect), " << reversed
+              << " undone by their reverse Q-zip, " << rolled_back << " rolled back; " << with_quad_too_few
+              << " from a defect -1, " << at_turn << " from where the curve turns, " << onto_other_defect
+              << " onto another defect; refused by status:";
+    for(const auto& r : refused) std::cout << " " << int(r.first) << "x" << r.second;
+    std::cout << "; predicted failures (each failing when forced):";
+    for(const auto& r : predicted) std::cout << " " << int(r.first) << "x" << r.second;
+    std::cout << "; no reverse:";
+    for(const auto& r : no_reverse) std::cout << " " << int(r.first) << "x" << r.second;
+    std::cout << std::endl;
+  }
+};
+
+/// The sketches from the interior singularity `s` to the feature vertex `t`: the shortest surgery path, and
+/// for each neighbour `u` of `t` through which a path may pass, the shortest surgery path to `u` followed by
+/// `u->t` (arrivals from every direction), when simple and of at most `max_length` edges.
+inline std::vector<std::vector<Surface_mesh::Vertex_index> >
+feature_end_sketches(const Surface_mesh& m, const Feature_map& fm, Surface_mesh::Vertex_index s,
+                     Surface_mesh::Vertex_index t, std::size_t max_length)
+{
+  namespace Q = CGAL::Qzip;
+  std::vector<std::vector<Surface_mesh::Vertex_index> > out;
+  auto keep = [&](const std::vector<Surface_mesh::Vertex_index>& p)
+  {
+    if(p.size() < 2 || p.size() > max_length + 1) return;
+    std::vector<Surface_mesh::Vertex_index> sorted(p);
+    std::sort(sorted.begin(), sorted.end());
+    if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return;
+    if(std::find(out.begin(), out.end(), p) == out.end()) out.push_back(p);
+  };
+  keep(Q::shortest_surgery_path(m, s, t, CGAL::parameters::edge_is_constrained_map(fm)));
+  for(auto h : CGAL::halfedges_around_target(halfedge(t, m), m))
+  {
+    const auto u = source(h, m);
+    if(u == s || on_border(u, m) || on_feature(u, m, fm)) continue;
+    auto p = Q::shortest_surgery_path(m, s, u, CGAL::parameters::edge_is_constrained_map(fm));
+    if(p.empty()) continue;
+    p.push_back(t);
+    keep(p);
+  }
+  return out;
+}
+
+/// the vertices at most `radius` edges from `t`
+inline std::set<Surface_mesh::Vertex_index> ball(const Surface_mesh& m, Surface_mesh::Vertex_index t, std::size_t radius)
+{
+  std::set<Surface_mesh::Vertex_index> seen = { t };
+  std::vector<Surface_mesh::Vertex_index> ring = { t };
+  for(std::size_t k = 0; k < radius; ++k)
+  {
+    std::vector<Surface_mesh::Vertex_index> next_ring;
+    for(auto v : ring)
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
+        if(seen.insert(source(h, m)).second) next_ring.push_back(source(h, m));
+    ring.swap(next_ring);
+  }
+  return seen;
+}
+
+/// Every interior singularity within `max_length` edges of a feature vertex with defect +1 or -1 (at most
+/// `max_targets` of them), every sketch of `feature_end_sketches()`, four motions. A realizable plan is executed
+/// on a copy of `m` (with the feature edges `segments`): the Q-zip keeps the invariants (Feature_invariants) and
+/// is undone exactly by its history; when it moved the feature defect it must have a reverse Q-zip, which gives
+/// back a mesh isomorphic to `m` with the same feature edges.
+inline Feature_move_counters feature_end_moves(const Surface_mesh& m, const Feature_segments& segments,
+                                               std::size_t max_length, std::size_t max_targets)
+{
+  namespace Q = CGAL::Qzip;
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
+  Feature_move_counters c;
+  Surface_mesh base;
+  copy_mesh(m, base); // no removed elements: a copy by assignment has the same descriptors
+  mark_features(base, segments);
+  auto features_of = [](Surface_mesh& x) { return x.property_map<Surface_mesh::Edge_index, bool>("e:qzip_test_feature").first; };
+  const Feature_map fbase = features_of(base);
+  const auto np_base = CGAL::parameters::edge_is_constrained_map(fbase);
+  std::size_t targets = 0;
+  for(vertex_descriptor t : vertices(base))
+  {
+    if(targets == max_targets) break;
+    if(on_border(t, base) || !on_feature(t, base, fbase) || std::abs(Q::vertex_defect(t, base, np_base)) != 1) continue;
+    ++targets;
+    for(vertex_descriptor s : ball(base, t, max_length))
+    {
+      if(on_border(s, base) || on_feature(s, base, fbase) || (valence(s, base) != 3 && valence(s, base) != 5)) continue;
+      for(const auto& sketch : feature_end_sketches(base, fbase, s, t, max_length))
+        for(int motion = 0; motion < 4; ++motion)
+        {
+          ++c.plans;
+          const auto plan = Q::plan_qzip(base, sketch, Q::Strip_operation(motion), np_base);
+          if(!plan.is_realizable())
+          {
+            ++c.refused[plan.status];
+            if(plan.status != Q::Plan_status::EXECUTION_WOULD_FAIL) continue;
+            // the simulation's prediction: forced through the executor, the plan fails and is rolled back
+            ++c.predicted[plan.predicted_failure];
+            Q::Surgery_plan<Surface_mesh> forced = plan;
+            forced.status = Q::Plan_status::REALIZABLE;
+            Surface_mesh work(base);
+            const Feature_map fm = features_of(work);
+            const auto r = Q::execute_qzip(work, forced, CGAL::parameters::edge_is_constrained_map(fm));
+            assert(!r.is_done() && r.failure == plan.predicted_failure);
+            assert(are_isomorphic(work, base) && feature_segments(work, fm) == segments);
+            continue;
+          }
+          assert(plan.target == t);
+          const vertex_descriptor end = plan.path.back();
+          const int end_defect = Q::vertex_defect(end, base, np_base);
+          Surface_mesh work(base);
+          const Feature_map fm = features_of(work);
+          const auto np = CGAL::parameters::edge_is_constrained_map(fm);
+          const Feature_invariants invariants(work, fm);
+          Q::Qzip_history<Surface_mesh> history(work);
+          const auto r = Q::execute_qzip(work, plan, history, np);
+          if(!r.is_done())
+          {
+            ++c.rolled_back;
+            assert(are_isomorphic(work, base) && invariants.same_features(work, fm));
+            continue;
+          }
+          ++c.done;
+          c.with_quad_too_few += Q::vertex_defect(t, base, np_base) == -1;
+          c.at_turn += curve_turns_at(t, base, fbase);
+          const bool cancelled = invariants.check_after(work, fm, r.number_of_splits, r.number_of_collapses);
+          if(!cancelled && end != t)
+          {
+            // the defect left the target for the end of the path, a feature vertex that kept its place
+            const vertex_descriptor end_after = vertices_by_position(work).at(base.point(end));
+            assert(on_feature(end_after, work, fm));
+            assert(Q::vertex_defect(end_after, work, np) == end_defect + Q::vertex_defect(t, base, np_base));
+          }
+          Surface_mesh after(work);
+          history.undo_all();
+          assert(CGAL::is_valid_polygon_mesh(work) && are_isomorphic(work, base) && invariants.same_features(work, fm));
+          assert(sorted_positions(work) == sorted_positions(base));
+          if(cancelled)
+          {
+            ++c.cancelling;
+            assert(r.reverse_status == Q::Reverse_qzip_status::SINGULARITIES_CANCELLED);
+            continue;
+          }
+          ++c.moved;
+          c.onto_other_defect += end_defect != 0;
+          // the mesh after the Q-zip, undone by the reverse Q-zip
+          if(r.reverse_status != Q::Reverse_qzip_status::AVAILABLE) { ++c.no_reverse[r.reverse_status]; continue; }
+          Surface_mesh& second = after;
+          const Feature_map f2 = features_of(second);
+          const auto back = Q::reverse_qzip(second, r, CGAL::parameters::edge_is_constrained_map(f2));
+          assert(back.is_done() && CGAL::is_valid_polygon_mesh(second) && are_isomorphic(second, base));
+          assert(invariants.same_features(second, f2));
+          ++c.reversed;
+        }
+    }
+  }
+  return c;
+}
+
+/// A flat nx x ny grid with a feature polyline through grid points (`polyline`, axis-parallel steps) and chains of
+/// collapses planted in it as in make_l_shape_with_chains(): each chain runs along a row or column from
+/// `chain[0], chain[1]` (inside) to `chain[2], chain[3]` (on the feature) and collapses the quads on the left of
+/// its edges (`chain[4]` = 1) or on their right (0), leaving a 3-5 pair at its start and a feature step at its
+/// end. The vertices off the feature and the border are then relaxed. Returns the feature edges.
+inline Feature_segments make_grid_with_feature(Surface_mesh& m, int nx, int ny, const std::vector<std::array<int, 2> >& polyline,
+                                               const std::vector<std::array<int, 5> >& chains)
+{
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
+  make_quad_grid(m, nx, ny);
+  std::map<std::pair<int, int>, vertex_descriptor> at;
+  for(vertex_descriptor v : vertices(m))
+    at[std::make_pair(int(std::lround(m.point(v).x())), int(std::lround(m.point(v).y())))] = v;
+  Feature_segments segments;
+  for(std::size_t k = 0; k + 1 < polyline.size(); ++k)
+  {
+    const int dx = (polyline[k + 1][0] > polyline[k][0]) - (polyline[k + 1][0] < polyline[k][0]);
+    const int dy = (polyline[k + 1][1] > polyline[k][1]) - (polyline[k + 1][1] < polyline[k][1]);
+    for(int x = polyline[k][0], y = polyline[k][1]; x != polyline[k + 1][0] || y != polyline[k + 1][1]; x += dx, y += dy)
+      segments.insert(segment_key(m.point(at.at(std::make_pair(x, y))), m.point(at.at(std::make_pair(x + dx, y + dy)))));
+  }
+  for(const std::array<int, 5>& chain : chains)
+  {
+    const int x0 = chain[0], y0 = chain[1], x1 = chain[2], y1 = chain[3];
+    const int dx = (x1 > x0) - (x1 < x0), dy = (y1 > y0) - (y1 < y0);
+    std::vector<vertex_descriptor> path;
+    for(int x = x0, y = y0;; x += dx, y += dy) { path.push_back(at.at(std::make_pair(x, y))); if(x == x1 && y == y1) break; }
+    for(std::size_t j = path.size() - 1; j-- > 0;)
+    {
+      const auto o = halfedge(path[j], path[j + 1], m).first;
+      const auto h = chain[4] == 1 ? o : prev(opposite(o, m), m);
+      assert(CGAL::Qzip::can_collapse_quad(h, m));
+      CGAL::Qzip::quad_collapse(h, m);
+    }
+  }
+  m.collect_garbage();
+  std::set<Point> fixed;
+  for(const auto& s : segments) { fixed.insert(s.first); fixed.insert(s.second); }
+  for(int it = 0; it < 30; ++it)
+    for(vertex_descriptor v : vertices(m))
+    {
+      if(on_border(v, m) || fixed.count(m.point(v))) continue;
+      double x = 0, y = 0, n = 0;
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) { x += m.point(source(h, m)).x(); y += m.point(source(h, m)).y(); ++n; }
+      m.point(v) = Point(x / n, y / n, 0);
+    }
+  return segments;
+}
+
+/// `m` with a chain of collapses planted as in make_grid_with_feature(), on a real mesh: from the `skip`-th
+/// feature vertex of valence 4 that has a straight run of `length` interior vertices of valence 4 off the
+/// features leaving it, the quads on the left of the run collapse towards
+/// the feature (the feature vertex keeps its place and its feature edges), leaving a 3-5 pair at the far end
+/// and a feature step at the feature vertex. False when there is no such run, or a collapse would merge a
+/// feature or border vertex away.
+inline bool plant_feature_chain(Surface_mesh& m, const Feature_segments& segments, std::size_t skip, std::size_t length)
+{
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
+  const Feature_map f = mark_features(m, segments);
+  auto regular_inside = [&](vertex_descriptor v) { return !on_border(v, m) && valence(v, m) == 4 && !on_feature(v, m, f); };
+  for(vertex_descriptor t : vertices(m))
+  {
+    if(on_border(t, m) || valence(t, m) != 4 || !on_feature(t, m, f)) continue;
+    for(auto h : CGAL::halfedges_around_source(t, m))
+    {
+      if(get(f, edge(h, m))) continue;
+      std::vector<vertex_descriptor> run = { t };
+      for(auto o = h; run.size() <= length && regular_inside(target(o, m));
+          o = next(opposite(next(o, m), m), m)) // straight on through a valence-4 vertex
+        run.push_back(target(o, m));
+      if(run.size() <= length) continue;
+      if(skip-- > 0) break;
+      std::reverse(run.begin(), run.end());
+      for(std::size_t j = run.size() - 1; j-- > 0;)
+      {
+        const auto o = halfedge(run[j], run[j + 1], m).first;
+        const vertex_descriptor merged = target(next(next(o, m), m), m);
+        if(!CGAL::Qzip::can_collapse_quad(o, m) || on_feature(merged, m, f) || on_border(merged, m)) return false;
+        CGAL::Qzip::quad_collapse(o, m);
+      }
+      m.collect_garbage();
+      return true;
+    }
+  }
+  return false;
+}
+
+/// On the grid with a +1 planted on a straight feature line: a sketch from the feature defect to the interior
+/// singularity is planned reversed (the same plan as the sketch from the singularity), and a sketch that arrives
+/// along a feature edge is refused.
+inline void test_feature_end_sketch_orientation()
+{
+  namespace Q = CGAL::Qzip;
+  Surface_mesh m;
+  const Feature_segments segments = make_grid_with_feature(m, 16, 12, { { { 0, 6 } }, { { 16, 6 } } }, { { { 5, 1, 5, 6, 1 } } });
+  const Feature_map f = mark_features(m, segments);
+  const auto np = CGAL::parameters::edge_is_constrained_map(f);
+  std::size_t realizable = 0, along = 0;
+  for(auto t : vertices(m))
+  {
+    if(on_border(t, m) || !on_feature(t, m, f) || Q::vertex_defect(t, m, np) != 1) continue;
+    for(auto s : vertices(m))
+    {
+      if(on_border(s, m) || on_feature(s, m, f) || (valence(s, m) != 3 && valence(s, m) != 5)) continue;
+      const auto sketch = Q::shortest_surgery_path(m, s, t, np);
+      if(sketch.empty()) continue;
+      for(int motion = 0; motion < 4; ++motion)
+      {
+        const auto plan = Q::plan_qzip(m, sketch, Q::Strip_operation(motion), np);
+        const auto reversed = Q::plan_qzip(m, std::vector<Surface_mesh::Vertex_index>(sketch.rbegin(), sketch.rend()),
+                                           Q::Strip_operation(motion), np);
+        assert(reversed.status == plan.status && reversed.path == plan.path && reversed.operations == plan.operations);
+        realizable += plan.is_realizable();
+      }
+      // the shortest surgery path to a neighbour x of t along the feature, then x -> t
+      for(auto h : CGAL::halfedges_around_target(halfedge(t, m), m))
+        if(get(f, edge(h, m)) && !on_border(source(h, m), m))
+        {
+          auto along_feature = Q::shortest_surgery_path(m, s, source(h, m), np);
+          if(along_feature.empty() || std::find(along_feature.begin(), along_feature.end(), t) != along_feature.end()) continue;
+          along_feature.push_back(t);
+          for(int motion = 0; motion < 4; ++motion)
+          {
+            const auto plan = Q::plan_qzip(m, along_feature, Q::Strip_operation(motion), np);
+            assert(!plan.is_realizable());
+            along += plan.status == Q::Plan_status::ENDPOINT_ADJUSTMENT;
+          }
+        }
+    }
+  }
+  std::cout << "  feature ends: " << realizable << " realizable plans equal to those of the reversed sketches, " << along
+            << " arrivals along a feature edge refused (ENDPOINT_ADJUSTMENT)" << std::endl;
+  assert(realizable > 0 && along > 0);
+}
+
+/// Q-zips ending at feature defects on planted grids (a straight feature line, a feature line with a right-angle
+/// turn) and on real CAD meshes (fandisk bundled; anchor_sharp and joint from the shared corpus when present).
+inline void test_feature_end_moves()
+{
+  Feature_move_counters grids, real;
+  // a straight horizontal feature line at y = 6, chains arriving from below and from above, on either side
+  const std::vector<std::array<int, 2> > straight = { { 0, 6 }, { 16, 6 } };
+  const std::vector<std::array<int, 2> > turning = { { 0, 6 }, { 8, 6 }, { 8, 12 } };
+  const std::vector<std::pair<std::vector<std::array<int, 2> >, std::vector<std::array<int, 5> > > > layouts = {
+    { straight, { { 5, 1, 5, 6, 1 } } }, { straight, { { 5, 1, 5, 6, 0 } } }, { straight, { { 10, 11, 10, 6, 1 } } },
+    { straight, { { 4, 2, 4, 6, 1 }, { 11, 10, 11, 6, 0 } } },
+    { turning, { { 8, 1, 8, 6, 1 } } }, { turning, { { 8, 1, 8, 6, 0 } } }, { turning, { { 3, 10, 8, 10, 1 } } },
+    { turning, { { 13, 9, 8, 9, 0 } } }, { turning, { { 7, 1, 7, 6, 0 } } }, { turning, { { 9, 1, 9, 6, 1 } } },
+    { turning, { { 13, 7, 8, 7, 1 } } } };
+  for(std::size_t k = 0; k < layouts.size(); ++k)
+  {
+    Surface_mesh m;
+    const Feature_segments segments = make_grid_with_feature(m, 16, 12, layouts[k].first, layouts[k].second);
+    const Feature_move_counters c = feature_end_moves(m, segments, 10, 8);
+    c.print("feature layout " + std::to_string(k));
+    grids.add(c);
+  }
+  // fandisk has a single feature defect, with no singularity a surgery path reaches: chains planted at four
+  // feature vertices
+  {
+    Surface_mesh fandisk;
+    const bool ok = read_mesh("data/pmp_fandisk_quads.off", fandisk);
+    assert(ok);
+    const Feature_segments segments = sharp_segments(fandisk);
+    for(std::size_t k = 0; k < 4; ++k)
+    {
+      Surface_mesh m;
+      copy_mesh(fandisk, m);
+      const bool planted = plant_feature_chain(m, segments, 25 * k, 4);
+      assert(planted);
+      const Feature_move_counters c = feature_end_moves(m, segments, 8, 4);
+      c.print("pmp_fandisk_quads.off, chain planted at feature vertex " + std::to_string(25 * k));
+      real.add(c);
+    }
+  }
+  std::vector<std::string> files;
+  const std::string corpus = shared_corpus_dir("feature ends on anchor_sharp and joint");
+  if(!corpus.empty())
+    for(const char* f : { "gen_quadriflow_anchor_sharp.obj", "quadwild_joint.obj" }) files.push_back(corpus + "/" + f);
+  for(const std::string& f : files)
+  {
+    Surface_mesh m;
+    const bool ok = read_mesh(f, m);
+    assert(ok);
+    const Feature_move_counters c = feature_end_moves(m, sharp_segments(m), 10, 12);
+    c.print(f);
+    real.add(c);
+  }
+  grids.print("feature defects, planted grids");
+  real.print("feature defects, CAD meshes");
+  for(const Feature_move_counters* c : { &grids, &real })
+    assert(c->moved > 0 && c->reversed == c->moved && c->rolled_back == 0 && c->no_reverse.empty());
+  assert(grids.with_quad_too_few > 0 && grids.at_turn > 0);
+  test_feature_end_sketch_orientation();
+}
+
+} // namespace qzip_test
+
+#endif // QZIP_FEATURE_END_TESTS_H
