@@ -115,6 +115,8 @@ class Batch_optimizer
   // op_stamp: the number of the surgery whose region first covered the vertex; the surgeries of this
   // batch are numbered from first_in_batch, those of the current pair (see follow()) from first_of_pair
   unsigned int surgery_serial = 0, first_in_batch = 1, first_of_pair = 1;
+  // every mark of the batch (see restore_marks())
+  std::vector<std::pair<vertex_descriptor, unsigned int> > marks_in_batch;
   // the partners of the chosen candidates of the batch (see watch_partners()): partner_id is
   // partner_base + 1 + their index, and a partner is lost once the region of a surgery covers it
   Id_map partner_id;
@@ -435,10 +437,26 @@ private:
   {
     for(vertex_descriptor v : region)
     {
-      if(get(op_stamp, v) < first_in_batch) put(op_stamp, v, surgery_serial);
+      if(get(op_stamp, v) < first_in_batch)
+      {
+        put(op_stamp, v, surgery_serial);
+        marks_in_batch.emplace_back(v, surgery_serial);
+      }
       const std::size_t p = get(partner_id, v);
       if(p > partner_base) partner_lost[p - partner_base - 1] = 1;
     }
+  }
+
+  // After an execution rolled back: the vertices it created and removed again are dead, and their
+  // descriptors may have been those of vertices removed earlier in the batch, which the plans of other
+  // candidates still name; a recycled descriptor lost its mark (Surface_mesh resets the properties of the
+  // elements it reuses), and the execution tells no one which vertices it created. Giving every vertex
+  // marked in this batch its mark back makes those plans skipped, instead of walking around a dead vertex.
+  // (An undone surgery's created vertices are known: see execute().)
+  void restore_marks()
+  {
+    for(const std::pair<vertex_descriptor, unsigned int>& m : marks_in_batch)
+      if(get(op_stamp, m.first) < first_in_batch) put(op_stamp, m.first, m.second);
   }
 
   // whether v lies in the region of a surgery of this batch, other than those of the current pair
@@ -567,6 +585,7 @@ private:
     if(!r.is_done())
     {
       ++stats.number_of_failed_surgeries;
+      restore_marks();
       mark_after_undo();
       reject(surgery_key, require_decrease);
       return FAILED;
@@ -784,6 +803,7 @@ private:
   {
     ++batch_epoch;
     first_in_batch = surgery_serial + 1;
+    marks_in_batch.clear();
     partner_base += partner_vertices.size() + 1;
     partner_vertices.clear();
     partner_lost.clear();
