@@ -354,16 +354,26 @@ private:
   // `b`) and change vertices within three edges of their paths
   int region_radius() const { return 2 * settings.max_distance + settings.partner_distance + 4; }
 
-  // the vertex at `p`, searched from the vertices of `around` that no Q-zip executed so far came near
-  // (they were never removed, so their descriptors are valid); `null_vertex()` if not found
+  // the vertex at `p`, searched breadth first (at most 2 max_distance + 8 edges) from the first vertex of
+  // `around` that no Q-zip executed so far came near (never removed, so its descriptor is valid);
+  // `null_vertex()` if not found
   vertex_descriptor relocate(const Point& p, const std::vector<vertex_descriptor>& around) const
   {
     for(vertex_descriptor v : around)
     {
       if(near_paths.count(v) != 0) continue;
-      for(vertex_descriptor w : ball(std::vector<vertex_descriptor>(1, v), 2 * settings.max_distance + 8))
-        if(get(vpm, w) == p) return w;
-      return GT::null_vertex();
+      std::unordered_set<vertex_descriptor, Vertex_hash> reached;
+      std::vector<int> level;
+      vertex_descriptor found = GT::null_vertex();
+      vertex_ball(std::vector<vertex_descriptor>(1, v), 2 * settings.max_distance + 8, pm, level,
+                  [&](vertex_descriptor w)
+      {
+        if(found != GT::null_vertex()) return false; // found: the search stops growing
+        if(!reached.insert(w).second) return false;
+        if(get(vpm, w) == p) found = w;
+        return true;
+      });
+      return found;
     }
     return GT::null_vertex();
   }
