@@ -115,6 +115,7 @@ public:
                                  [&reached](vertex_descriptor v) { return reached.insert(v).second; });
     }
     near_chain.clear();
+    refused.clear();
     const std::pair<std::size_t, double> before = quality(state.region);
     state.inverted_before = before.first;
     state.min_quality_before = before.second;
@@ -318,6 +319,11 @@ private:
       if(state.region_level[i] < region_radius() && unchanged.count(state.region[i]) != 0)
         reach_changed_neighbours(state.region[i]);
     for(std::size_t i = 0; i < changed.size(); ++i) reach_changed_neighbours(changed[i]);
+    // another chain of the search may have left the same mesh (the same Q-zips in another order, or
+    // ending the same way after Q-zips that were undone): it was refused, and would be again
+    std::size_t signature = changed.size();
+    for(vertex_descriptor v : changed) signature += ring_hash(v) * 0x9E3779B97F4A7C15ull;
+    if(!refused.insert(signature).second) return false;
     std::vector<vertex_descriptor> scar = ball(changed, 1);
     std::sort(scar.begin(), scar.end(), [this](vertex_descriptor x, vertex_descriptor y)
     {
@@ -347,6 +353,26 @@ private:
     }
     for(std::size_t i = 0; i < scar.size(); ++i) put(vpm, scar[i], saved[i]);
     return false;
+  }
+
+  // a hash of the position of v and of the positions of its neighbours (in any order)
+  std::size_t ring_hash(vertex_descriptor v) const
+  {
+    auto point_hash = [this](vertex_descriptor u)
+    {
+      const Point& p = get(vpm, u);
+      std::size_t h = 0;
+      boost::hash_combine(h, CGAL::to_double(p.x()));
+      boost::hash_combine(h, CGAL::to_double(p.y()));
+      boost::hash_combine(h, CGAL::to_double(p.z()));
+      return h;
+    };
+    std::size_t around = 0;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      around += point_hash(source(h, pm)) * 0x9E3779B97F4A7C15ull;
+    std::size_t out = point_hash(v);
+    boost::hash_combine(out, around);
+    return out;
   }
 
   // the region of a chain: its Q-zips run within 2 max_distance + partner_distance edges of `a` (`a` stays
@@ -456,6 +482,9 @@ private:
   std::size_t executions = 0, undos = 0, budget_end = 0, judgements = 0, judgement_end = 0;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_paths;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_chain; // the part of near_paths of the current search
+  // the chains of the current search refused by the quality guard: a hash of the vertices they changed
+  // (positions and neighbours' positions, see passes_quality_guard())
+  std::unordered_set<std::size_t> refused;
   static constexpr int untangling_sweeps = 20;
 };
 
