@@ -18,12 +18,12 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
 
 #include <boost/functional/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
-#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -53,6 +53,7 @@ class Look_ahead
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
   typedef boost::hash<vertex_descriptor> Vertex_hash;
   typedef Surgery_plan<PolygonMesh> Plan;
+  typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<unsigned int> >::type Mark_map;
 
 public:
   struct Settings
@@ -80,8 +81,11 @@ public:
 
   Look_ahead(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
              Smoother& smoother, const Settings& settings)
-    : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm), smoother(smoother), settings(settings)
-  {}
+    : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm), smoother(smoother), settings(settings),
+      reached_in(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm))
+  {
+    for(vertex_descriptor v : vertices(pm)) put(reached_in, v, 0u);
+  }
 
   // the number of Q-zips executed so far (kept or undone)
   std::size_t number_of_executions() const { return executions; }
@@ -164,16 +168,18 @@ private:
   }
 
   // breadth-first search from s through passable vertices, up to `radius` edges, avoiding `avoid`:
-  // the vertices reached in order, each with the one it was reached from
+  // the vertices reached in order, each with its distance to s and the one it was reached from
   struct Search
   {
     std::vector<vertex_descriptor> order;
-    std::unordered_map<vertex_descriptor, vertex_descriptor, Vertex_hash> from;
+    std::vector<int> level;
+    std::vector<std::size_t> from; // index in `order`
 
-    std::vector<vertex_descriptor> path_to(vertex_descriptor t) const
+    // the path from s to order[i]
+    std::vector<vertex_descriptor> path_to(std::size_t i) const
     {
-      std::vector<vertex_descriptor> path(1, t);
-      for(vertex_descriptor v = t; from.at(v) != v; v = from.at(v)) path.push_back(from.at(v));
+      std::vector<vertex_descriptor> path(1, order[i]);
+      for(; i != 0; i = from[i]) path.push_back(order[from[i]]);
       std::reverse(path.begin(), path.end());
       return path;
     }
@@ -182,20 +188,27 @@ private:
   void search_from(vertex_descriptor s, int radius,
                    const std::unordered_set<vertex_descriptor, Vertex_hash>& avoid, Search& out) const
   {
+    if(++search_round == 0) // the marks wrapped around
+    {
+      for(vertex_descriptor v : vertices(pm)) put(reached_in, v, 0u);
+      search_round = 1;
+    }
     out.order.assign(1, s);
-    out.from.clear();
-    out.from[s] = s;
-    std::vector<int> level(1, 0);
+    out.level.assign(1, 0);
+    out.from.assign(1, 0);
+    put(reached_in, s, search_round);
     for(std::size_t i = 0; i < out.order.size(); ++i)
     {
       const vertex_descriptor v = out.order[i];
-      if(level[i] >= radius || (i > 0 && valence_if_passable(v) < 0)) continue;
+      if(out.level[i] >= radius || (i > 0 && valence_if_passable(v) < 0)) continue;
       for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
       {
         const vertex_descriptor w = source(h, pm);
-        if(avoid.count(w) != 0 || !out.from.emplace(w, v).second) continue;
+        if(get(reached_in, w) == search_round || avoid.count(w) != 0) continue;
+        put(reached_in, w, search_round);
         out.order.push_back(w);
-        level.push_back(level[i] + 1);
+        out.level.push_back(out.level[i] + 1);
+        out.from.push_back(i);
       }
     }
   }
@@ -207,10 +220,10 @@ private:
     const int da = valence_if_passable(a) - 4;
     Search s;
     search_from(a, radius, {}, s);
-    for(vertex_descriptor v : s.order)
+    for(std::size_t i = 1; i < s.order.size(); ++i)
     {
-      const int dv = valence_if_passable(v);
-      if(v != a && (dv == 3 || dv == 5) && (dv - 4) * da < 0) return int(s.path_to(v).size()) - 1;
+      const int dv = valence_if_passable(s.order[i]);
+      if((dv == 3 || dv == 5) && (dv - 4) * da < 0) return s.level[i];
     }
     return -1;
   }
@@ -226,22 +239,23 @@ private:
     std::vector<std::vector<vertex_descriptor> > sketches; // and whether each goes through b
     std::vector<bool> through_b;
     std::size_t opposites = 0;
-    for(vertex_descriptor b : sa.order)
+    for(std::size_t i = 1; i < sa.order.size(); ++i)
     {
+      const vertex_descriptor b = sa.order[i];
       const int db = valence_if_passable(b);
-      if(b == a || !(db == 3 || db == 5) || (db - 4) * da >= 0) continue;
-      const std::vector<vertex_descriptor> to_b = sa.path_to(b);
+      if(!(db == 3 || db == 5) || (db - 4) * da >= 0) continue;
+      const std::vector<vertex_descriptor> to_b = sa.path_to(i);
       sketches.push_back(to_b);
       through_b.push_back(false);
       std::unordered_set<vertex_descriptor, Vertex_hash> avoid(to_b.begin(), to_b.end() - 1);
       Search sb;
       search_from(b, settings.partner_distance, avoid, sb);
       std::size_t partners = 0;
-      for(vertex_descriptor c : sb.order)
+      for(std::size_t j = 1; j < sb.order.size(); ++j)
       {
-        if(c == b || !is_endpoint(c)) continue;
+        if(!is_endpoint(sb.order[j])) continue;
         std::vector<vertex_descriptor> sketch = to_b;
-        const std::vector<vertex_descriptor> beyond = sb.path_to(c);
+        const std::vector<vertex_descriptor> beyond = sb.path_to(j);
         sketch.insert(sketch.end(), beyond.begin() + 1, beyond.end());
         sketches.push_back(std::move(sketch));
         through_b.push_back(true);
@@ -479,6 +493,10 @@ private:
   FaceIsConstrainedMap fcm;
   Smoother& smoother;
   Settings settings;
+  // the vertices reached by the current search_from() have the mark search_round (vertices created since
+  // the construction have 0 or a mark of an older search)
+  Mark_map reached_in;
+  mutable unsigned int search_round = 0;
   std::size_t executions = 0, undos = 0, budget_end = 0, judgements = 0, judgement_end = 0;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_paths;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_chain; // the part of near_paths of the current search
