@@ -185,18 +185,30 @@ private:
     }
   };
 
+  // starts a walk (search_from(), ball(), relocate()): no vertex is reached yet
+  void new_round() const
+  {
+    if(++search_round != 0) return;
+    for(vertex_descriptor v : vertices(pm)) put(reached_in, v, 0u); // the marks wrapped around
+    search_round = 1;
+  }
+
+  // marks v as reached by the current walk; whether it was not before
+  bool reach(vertex_descriptor v) const
+  {
+    if(get(reached_in, v) == search_round) return false;
+    put(reached_in, v, search_round);
+    return true;
+  }
+
   void search_from(vertex_descriptor s, int radius,
                    const std::unordered_set<vertex_descriptor, Vertex_hash>& avoid, Search& out) const
   {
-    if(++search_round == 0) // the marks wrapped around
-    {
-      for(vertex_descriptor v : vertices(pm)) put(reached_in, v, 0u);
-      search_round = 1;
-    }
+    new_round();
     out.order.assign(1, s);
     out.level.assign(1, 0);
     out.from.assign(1, 0);
-    put(reached_in, s, search_round);
+    reach(s);
     for(std::size_t i = 0; i < out.order.size(); ++i)
     {
       const vertex_descriptor v = out.order[i];
@@ -205,7 +217,7 @@ private:
       {
         const vertex_descriptor w = source(h, pm);
         if(get(reached_in, w) == search_round || avoid.count(w) != 0) continue;
-        put(reached_in, w, search_round);
+        reach(w);
         out.order.push_back(w);
         out.level.push_back(out.level[i] + 1);
         out.from.push_back(i);
@@ -295,9 +307,9 @@ private:
   // the vertices within `radius` edges of `seeds`
   std::vector<vertex_descriptor> ball(const std::vector<vertex_descriptor>& seeds, int radius) const
   {
-    std::unordered_set<vertex_descriptor, Vertex_hash> reached;
+    new_round();
     std::vector<int> level;
-    return vertex_ball(seeds, radius, pm, level, [&reached](vertex_descriptor v) { return reached.insert(v).second; });
+    return vertex_ball(seeds, radius, pm, level, [this](vertex_descriptor v) { return reach(v); });
   }
 
   // the number of inverted quads incident to `region` and the smallest scaled Jacobian among them
@@ -402,14 +414,14 @@ private:
     for(vertex_descriptor v : around)
     {
       if(near_paths.count(v) != 0) continue;
-      std::unordered_set<vertex_descriptor, Vertex_hash> reached;
+      new_round();
       std::vector<int> level;
       vertex_descriptor found = GT::null_vertex();
       vertex_ball(std::vector<vertex_descriptor>(1, v), 2 * settings.max_distance + 8, pm, level,
                   [&](vertex_descriptor w)
       {
         if(found != GT::null_vertex()) return false; // found: the search stops growing
-        if(!reached.insert(w).second) return false;
+        if(!reach(w)) return false;
         if(get(vpm, w) == p) found = w;
         return true;
       });
@@ -493,8 +505,8 @@ private:
   FaceIsConstrainedMap fcm;
   Smoother& smoother;
   Settings settings;
-  // the vertices reached by the current search_from() have the mark search_round (vertices created since
-  // the construction have 0 or a mark of an older search)
+  // the vertices reached by the current walk (see new_round()) have the mark search_round (vertices created
+  // since the construction have 0 or the mark of an older walk)
   Mark_map reached_in;
   mutable unsigned int search_round = 0;
   std::size_t executions = 0, undos = 0, budget_end = 0, judgements = 0, judgement_end = 0;
