@@ -28,6 +28,7 @@
 #include <cmath>
 #include <limits>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -271,19 +272,21 @@ public:
   // the best of a few positions projected onto the surface: towards the point that would make one of its
   // quads a parallelogram, towards the mean of these points, and steps in eight directions of its tangent
   // plane. The smallest scaled Jacobian of the quads around `region` never decreases. Returns the number of
-  // moves.
+  // moves. A vertex that stayed is tried again only once a vertex of one of its faces moved (its trials
+  // depend on nothing else, so they would give the same result).
   std::size_t untangle(const std::vector<vertex_descriptor>& region, int sweeps, double floor)
   {
     typedef typename GeomTraits::Vector_3 Vector;
     typedef typename GeomTraits::FT FT;
     std::size_t moved = 0;
     std::vector<Point> goals, trials;
+    std::unordered_set<vertex_descriptor, boost::hash<vertex_descriptor> > stuck; // tried, stayed, nothing moved around since
     for(int sweep = 0; sweep < sweeps; ++sweep)
     {
       std::size_t moved_in_sweep = 0;
       for(vertex_descriptor v : region)
       {
-        if(is_fixed(v) || feature_vertices.count(v) != 0) continue;
+        if(is_fixed(v) || feature_vertices.count(v) != 0 || stuck.count(v) != 0) continue;
         const std::pair<int, double> before = incident_quality(v);
         if(before.second >= floor) continue;
         const Point old = get(vpm, v);
@@ -335,7 +338,12 @@ public:
           if(q.first <= best_quality.first && q.second > best_quality.second) { best = candidate; best_quality = q; }
         }
         put(vpm, v, best);
-        if(best != old) { ++moved; ++moved_in_sweep; }
+        if(best == old) { stuck.insert(v); continue; }
+        ++moved;
+        ++moved_in_sweep;
+        for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+          if(!is_border(h, pm))
+            for(halfedge_descriptor g : halfedges_around_face(h, pm)) stuck.erase(target(g, pm));
       }
       if(moved_in_sweep == 0) break;
     }

@@ -18,12 +18,12 @@
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
 
 #include <boost/functional/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
-#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -53,6 +53,7 @@ class Look_ahead
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
   typedef boost::hash<vertex_descriptor> Vertex_hash;
   typedef Surgery_plan<PolygonMesh> Plan;
+  typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<unsigned int> >::type Mark_map;
 
 public:
   struct Settings
@@ -80,8 +81,11 @@ public:
 
   Look_ahead(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
              Smoother& smoother, const Settings& settings)
-    : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm), smoother(smoother), settings(settings)
-  {}
+    : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm), smoother(smoother), settings(settings),
+      reached_in(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm))
+  {
+    for(vertex_descriptor v : vertices(pm)) put(reached_in, v, 0u);
+  }
 
   // the number of Q-zips executed so far (kept or undone)
   std::size_t number_of_executions() const { return executions; }
@@ -115,6 +119,7 @@ public:
                                  [&reached](vertex_descriptor v) { return reached.insert(v).second; });
     }
     near_chain.clear();
+    refused.clear();
     const std::pair<std::size_t, double> before = quality(state.region);
     state.inverted_before = before.first;
     state.min_quality_before = before.second;
@@ -163,38 +168,59 @@ private:
   }
 
   // breadth-first search from s through passable vertices, up to `radius` edges, avoiding `avoid`:
-  // the vertices reached in order, each with the one it was reached from
+  // the vertices reached in order, each with its distance to s and the one it was reached from
   struct Search
   {
     std::vector<vertex_descriptor> order;
-    std::unordered_map<vertex_descriptor, vertex_descriptor, Vertex_hash> from;
+    std::vector<int> level;
+    std::vector<std::size_t> from; // index in `order`
 
-    std::vector<vertex_descriptor> path_to(vertex_descriptor t) const
+    // the path from s to order[i]
+    std::vector<vertex_descriptor> path_to(std::size_t i) const
     {
-      std::vector<vertex_descriptor> path(1, t);
-      for(vertex_descriptor v = t; from.at(v) != v; v = from.at(v)) path.push_back(from.at(v));
+      std::vector<vertex_descriptor> path(1, order[i]);
+      for(; i != 0; i = from[i]) path.push_back(order[from[i]]);
       std::reverse(path.begin(), path.end());
       return path;
     }
   };
 
+  // starts a walk (search_from(), ball(), relocate()): no vertex is reached yet
+  void new_round() const
+  {
+    if(++search_round != 0) return;
+    for(vertex_descriptor v : vertices(pm)) put(reached_in, v, 0u); // the marks wrapped around
+    search_round = 1;
+  }
+
+  // marks v as reached by the current walk; whether it was not before
+  bool reach(vertex_descriptor v) const
+  {
+    if(get(reached_in, v) == search_round) return false;
+    put(reached_in, v, search_round);
+    return true;
+  }
+
   void search_from(vertex_descriptor s, int radius,
                    const std::unordered_set<vertex_descriptor, Vertex_hash>& avoid, Search& out) const
   {
+    new_round();
     out.order.assign(1, s);
-    out.from.clear();
-    out.from[s] = s;
-    std::vector<int> level(1, 0);
+    out.level.assign(1, 0);
+    out.from.assign(1, 0);
+    reach(s);
     for(std::size_t i = 0; i < out.order.size(); ++i)
     {
       const vertex_descriptor v = out.order[i];
-      if(level[i] >= radius || (i > 0 && valence_if_passable(v) < 0)) continue;
+      if(out.level[i] >= radius || (i > 0 && valence_if_passable(v) < 0)) continue;
       for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
       {
         const vertex_descriptor w = source(h, pm);
-        if(avoid.count(w) != 0 || !out.from.emplace(w, v).second) continue;
+        if(get(reached_in, w) == search_round || avoid.count(w) != 0) continue;
+        reach(w);
         out.order.push_back(w);
-        level.push_back(level[i] + 1);
+        out.level.push_back(out.level[i] + 1);
+        out.from.push_back(i);
       }
     }
   }
@@ -206,10 +232,10 @@ private:
     const int da = valence_if_passable(a) - 4;
     Search s;
     search_from(a, radius, {}, s);
-    for(vertex_descriptor v : s.order)
+    for(std::size_t i = 1; i < s.order.size(); ++i)
     {
-      const int dv = valence_if_passable(v);
-      if(v != a && (dv == 3 || dv == 5) && (dv - 4) * da < 0) return int(s.path_to(v).size()) - 1;
+      const int dv = valence_if_passable(s.order[i]);
+      if((dv == 3 || dv == 5) && (dv - 4) * da < 0) return s.level[i];
     }
     return -1;
   }
@@ -225,22 +251,23 @@ private:
     std::vector<std::vector<vertex_descriptor> > sketches; // and whether each goes through b
     std::vector<bool> through_b;
     std::size_t opposites = 0;
-    for(vertex_descriptor b : sa.order)
+    for(std::size_t i = 1; i < sa.order.size(); ++i)
     {
+      const vertex_descriptor b = sa.order[i];
       const int db = valence_if_passable(b);
-      if(b == a || !(db == 3 || db == 5) || (db - 4) * da >= 0) continue;
-      const std::vector<vertex_descriptor> to_b = sa.path_to(b);
+      if(!(db == 3 || db == 5) || (db - 4) * da >= 0) continue;
+      const std::vector<vertex_descriptor> to_b = sa.path_to(i);
       sketches.push_back(to_b);
       through_b.push_back(false);
       std::unordered_set<vertex_descriptor, Vertex_hash> avoid(to_b.begin(), to_b.end() - 1);
       Search sb;
       search_from(b, settings.partner_distance, avoid, sb);
       std::size_t partners = 0;
-      for(vertex_descriptor c : sb.order)
+      for(std::size_t j = 1; j < sb.order.size(); ++j)
       {
-        if(c == b || !is_endpoint(c)) continue;
+        if(!is_endpoint(sb.order[j])) continue;
         std::vector<vertex_descriptor> sketch = to_b;
-        const std::vector<vertex_descriptor> beyond = sb.path_to(c);
+        const std::vector<vertex_descriptor> beyond = sb.path_to(j);
         sketch.insert(sketch.end(), beyond.begin() + 1, beyond.end());
         sketches.push_back(std::move(sketch));
         through_b.push_back(true);
@@ -280,9 +307,9 @@ private:
   // the vertices within `radius` edges of `seeds`
   std::vector<vertex_descriptor> ball(const std::vector<vertex_descriptor>& seeds, int radius) const
   {
-    std::unordered_set<vertex_descriptor, Vertex_hash> reached;
+    new_round();
     std::vector<int> level;
-    return vertex_ball(seeds, radius, pm, level, [&reached](vertex_descriptor v) { return reached.insert(v).second; });
+    return vertex_ball(seeds, radius, pm, level, [this](vertex_descriptor v) { return reach(v); });
   }
 
   // the number of inverted quads incident to `region` and the smallest scaled Jacobian among them
@@ -318,6 +345,11 @@ private:
       if(state.region_level[i] < region_radius() && unchanged.count(state.region[i]) != 0)
         reach_changed_neighbours(state.region[i]);
     for(std::size_t i = 0; i < changed.size(); ++i) reach_changed_neighbours(changed[i]);
+    // another chain of the search may have left the same mesh (the same Q-zips in another order, or
+    // ending the same way after Q-zips that were undone): it was refused, and would be again
+    std::size_t signature = changed.size();
+    for(vertex_descriptor v : changed) signature += ring_hash(v) * 0x9E3779B97F4A7C15ull;
+    if(!refused.insert(signature).second) return false;
     std::vector<vertex_descriptor> scar = ball(changed, 1);
     std::sort(scar.begin(), scar.end(), [this](vertex_descriptor x, vertex_descriptor y)
     {
@@ -349,21 +381,51 @@ private:
     return false;
   }
 
+  // a hash of the position of v and of the positions of its neighbours (in any order)
+  std::size_t ring_hash(vertex_descriptor v) const
+  {
+    auto point_hash = [this](vertex_descriptor u)
+    {
+      const Point& p = get(vpm, u);
+      std::size_t h = 0;
+      boost::hash_combine(h, CGAL::to_double(p.x()));
+      boost::hash_combine(h, CGAL::to_double(p.y()));
+      boost::hash_combine(h, CGAL::to_double(p.z()));
+      return h;
+    };
+    std::size_t around = 0;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      around += point_hash(source(h, pm)) * 0x9E3779B97F4A7C15ull;
+    std::size_t out = point_hash(v);
+    boost::hash_combine(out, around);
+    return out;
+  }
+
   // the region of a chain: its Q-zips run within 2 max_distance + partner_distance edges of `a` (`a` stays
   // within max_distance of the singularity `b` it moves to, partners are at most partner_distance beyond
   // `b`) and change vertices within three edges of their paths
   int region_radius() const { return 2 * settings.max_distance + settings.partner_distance + 4; }
 
-  // the vertex at `p`, searched from the vertices of `around` that no Q-zip executed so far came near
-  // (they were never removed, so their descriptors are valid); `null_vertex()` if not found
+  // the vertex at `p`, searched breadth first (at most 2 max_distance + 8 edges) from the first vertex of
+  // `around` that no Q-zip executed so far came near (never removed, so its descriptor is valid);
+  // `null_vertex()` if not found
   vertex_descriptor relocate(const Point& p, const std::vector<vertex_descriptor>& around) const
   {
     for(vertex_descriptor v : around)
     {
       if(near_paths.count(v) != 0) continue;
-      for(vertex_descriptor w : ball(std::vector<vertex_descriptor>(1, v), 2 * settings.max_distance + 8))
-        if(get(vpm, w) == p) return w;
-      return GT::null_vertex();
+      new_round();
+      std::vector<int> level;
+      vertex_descriptor found = GT::null_vertex();
+      vertex_ball(std::vector<vertex_descriptor>(1, v), 2 * settings.max_distance + 8, pm, level,
+                  [&](vertex_descriptor w)
+      {
+        if(found != GT::null_vertex()) return false; // found: the search stops growing
+        if(!reach(w)) return false;
+        if(get(vpm, w) == p) found = w;
+        return true;
+      });
+      return found;
     }
     return GT::null_vertex();
   }
@@ -443,9 +505,16 @@ private:
   FaceIsConstrainedMap fcm;
   Smoother& smoother;
   Settings settings;
+  // the vertices reached by the current walk (see new_round()) have the mark search_round (vertices created
+  // since the construction have 0 or the mark of an older walk)
+  Mark_map reached_in;
+  mutable unsigned int search_round = 0;
   std::size_t executions = 0, undos = 0, budget_end = 0, judgements = 0, judgement_end = 0;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_paths;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_chain; // the part of near_paths of the current search
+  // the chains of the current search refused by the quality guard: a hash of the vertices they changed
+  // (positions and neighbours' positions, see passes_quality_guard())
+  std::unordered_set<std::size_t> refused;
   static constexpr int untangling_sweeps = 20;
 };
 
