@@ -225,7 +225,7 @@ public:
     {
       const int u = near_queue[std::size_t(q)];
       const std::size_t k = kept_slot(by_index[std::size_t(u)]);
-      if(k != 0 && kept[k - 1].radius >= level[q]) forget(k);
+      if(k != 0 && kept[k - 1].radius >= level[q]) keep_closer_than(k, level[q]);
       if(level[q] >= kept_radius) continue;
       for(const int* w = neighbors_begin(u); w != neighbors_end(u); ++w)
       {
@@ -253,35 +253,41 @@ private:
     kept_free.push_back(k - 1);
   }
 
+  // keeps, of the kept labels of entry k, those closer than `edited_distance`, the distance from their
+  // vertex to the closest vertex edited by the last batch (forgets the entry if none is). They are exact:
+  // a path from the vertex shorter than `edited_distance` passes through no edited vertex, so it was a path
+  // before the batch and still is one, and no path through an edited vertex is shorter; thus the
+  // singularities closer than `edited_distance` are the same and at the same distances, in the same order
+  // (their positions are checked when the labels are restored). The search that found the labels went at
+  // least that far, so it found all of them: the labels left are the start of the labels of the vertex,
+  // complete up to `edited_distance - 1` edges.
+  void keep_closer_than(std::size_t k, int edited_distance) const
+  {
+    Kept& e = kept[k - 1];
+    std::size_t count = 0;
+    while(count < e.count && e.distance[count] < edited_distance) ++count;
+    if(count == 0) { forget(k); return; }
+    e.count = count;
+    e.complete = false;
+    e.radius = edited_distance - 1;
+  }
+
   std::vector<vertex_descriptor> refresh()
   {
     ++epoch;
     clear_cache();
     by_index.clear(); defects.clear(); cut.clear(); passable.clear(); adjacency_begin.clear(); adjacency.clear();
+    // the vertices (isolated ones excepted) are numbered in breadth-first order, component by component:
+    // the searches on the arrays indexed by vertex then read entries close to each other. The numbering
+    // changes no answer: ties between singularities are broken by their positions, and the neighbors of a
+    // vertex are listed in rotation order whatever their numbers.
+    std::vector<vertex_descriptor> singular;
     for(vertex_descriptor v : vertices(pm))
     {
-      if(halfedge(v, pm) == GT::null_halfedge()) continue;
-      put(stamp, v, epoch);
-      put(index_map, v, int(by_index.size()));
-      by_index.push_back(v);
-    }
-    std::vector<vertex_descriptor> singular;
-    for(vertex_descriptor v : by_index)
-    {
-      bool c = false, p = false;
-      adjacency_begin.push_back(int(adjacency.size()));
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-      {
-        adjacency.push_back(get(index_map, source(h, pm)));
-        if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) c = true;
-        if(!is_border(h, pm) && get(fcm, face(h, pm))) p = true;
-      }
-      const int d = c ? internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect
-                      : int(adjacency.size()) - adjacency_begin.back() - 4;
-      defects.push_back(d);
-      cut.push_back(c ? 1 : 0);
-      passable.push_back(c || p ? 0 : 1);
-      if(d != 0) singular.push_back(v);
+      if(halfedge(v, pm) == GT::null_halfedge() || get(stamp, v) == epoch) continue;
+      std::size_t i = by_index.size();
+      number(v);
+      for(; i < by_index.size(); ++i) if(add_row(by_index[i])) singular.push_back(by_index[i]);
     }
     adjacency_begin.push_back(int(adjacency.size()));
     // an order that does not depend on descriptors (the seeds' order breaks ties)
@@ -334,6 +340,36 @@ private:
     visit.assign(by_index.size(), 0u);
     visit_round = 0;
     return singular;
+  }
+
+  // gives v the next index
+  void number(vertex_descriptor v)
+  {
+    put(stamp, v, epoch);
+    put(index_map, v, int(by_index.size()));
+    by_index.push_back(v);
+  }
+
+  // the row of v (numbered): its neighbors, numbering those that are not yet, its defect, whether it is a
+  // border/feature vertex and whether it is passable; returns whether it is singular
+  bool add_row(vertex_descriptor v)
+  {
+    bool c = false, p = false;
+    adjacency_begin.push_back(int(adjacency.size()));
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      const vertex_descriptor w = source(h, pm);
+      if(get(stamp, w) != epoch) number(w);
+      adjacency.push_back(get(index_map, w));
+      if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) c = true;
+      if(!is_border(h, pm) && get(fcm, face(h, pm))) p = true;
+    }
+    const int d = c ? internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect
+                    : int(adjacency.size()) - adjacency_begin.back() - 4;
+    defects.push_back(d);
+    cut.push_back(c ? 1 : 0);
+    passable.push_back(c || p ? 0 : 1);
+    return d != 0;
   }
 
 public:
