@@ -56,7 +56,7 @@ vertex (`nearest_singularities()`, at most `max_nearest_singularities`, ties bro
 the singularities) are found when first asked for in the batch, by a breadth-first search around the
 vertex that stops once they are known; the variant that skips two singularities and asks for only a few
 of them stops earlier. Both are kept for the batch, and across batches for the vertices whose search
-ball no surgery touched. `distance_to_separatrix()` is a search within three edges done once per vertex
+ball no surgery touched (for the others, those closer than the closest edited vertex). `distance_to_separatrix()` is a search within three edges done once per vertex
 and batch. `distance()` runs bounded breadth-first searches, a few of which are kept.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`
@@ -205,11 +205,27 @@ public:
 
   // same, after a batch that edited (moved, or changed the neighbors of) the vertices `edited` and no
   // other vertex, except by surgeries it undid: the closest singularities found in earlier batches are
-  // kept for the vertices farther from the edited ones than their search went.
+  // kept for the vertices farther from the edited ones than their search went, and those closer than the
+  // edited vertices for the others (see keep_closer_than()).
   std::vector<vertex_descriptor> begin_batch(const std::vector<vertex_descriptor>& edited)
   {
     std::vector<vertex_descriptor> singular = refresh();
-    if(kept.size() == kept_free.size()) return singular;
+    // the kept entries of the vertices of the mesh, by vertex index, and how many there are of each radius
+    std::vector<std::size_t> entry_at(by_index.size(), 0);
+    std::vector<std::size_t> of_radius(std::size_t(kept_radius) + 1, 0);
+    for(std::size_t k = 1; k <= kept.size(); ++k)
+    {
+      const int i = index(kept[k - 1].owner);
+      if(i < 0 || kept_slot(kept[k - 1].owner) != k) continue;
+      entry_at[std::size_t(i)] = k;
+      ++of_radius[std::size_t(kept[k - 1].radius)];
+    }
+    // breadth-first from the edited vertices, while an entry not reached yet may have an edited vertex
+    // within its radius
+    int unreached_radius = kept_radius; // the largest radius of an entry not reached yet (or less)
+    auto settle = [&]() { while(unreached_radius >= 0 && of_radius[std::size_t(unreached_radius)] == 0) --unreached_radius; };
+    settle();
+    if(unreached_radius < 0) return singular;
     if(++near_round == 0) { std::fill(near_visit.begin(), near_visit.end(), 0u); near_round = 1; }
     near_queue.clear();
     std::vector<int> level;
@@ -224,9 +240,14 @@ public:
     for(std::size_t q = 0; q < near_queue.size(); ++q)
     {
       const int u = near_queue[std::size_t(q)];
-      const std::size_t k = kept_slot(by_index[std::size_t(u)]);
-      if(k != 0 && kept[k - 1].radius >= level[q]) keep_closer_than(k, level[q]);
-      if(level[q] >= kept_radius) continue;
+      const std::size_t k = entry_at[std::size_t(u)];
+      if(k != 0)
+      {
+        --of_radius[std::size_t(kept[k - 1].radius)];
+        if(kept[k - 1].radius >= level[q]) keep_closer_than(k, level[q]);
+        settle();
+      }
+      if(level[q] >= unreached_radius) continue;
       for(const int* w = neighbors_begin(u); w != neighbors_end(u); ++w)
       {
         if(near_visit[std::size_t(*w)] == near_round) continue;
