@@ -463,6 +463,72 @@ void test_travel()
   assert(vis.batches_with_more > 0);
 }
 
+// the first n singularities other than x1 and x2 that the context gives at v (a vertex of a closed mesh),
+// asked right after the scoring's own questions (so maybe answered by labels kept from earlier batches),
+// are at the distances of the first ones a plain breadth-first search finds
+template <typename PolygonMesh, typename Context>
+void check_kept_nearest_singularities(const PolygonMesh& pm, const Context& ctx,
+                                      typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                                      typename boost::graph_traits<PolygonMesh>::vertex_descriptor x1,
+                                      typename boost::graph_traits<PolygonMesh>::vertex_descriptor x2, std::size_t n)
+{
+  std::map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, int> dist;
+  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> queue(1, v);
+  dist[v] = 0;
+  std::vector<int> singular_distances;
+  for(std::size_t i = 0; i < queue.size(); ++i)
+  {
+    const auto u = queue[i];
+    if(u != v && u != x1 && u != x2 && degree(u, pm) != 4) singular_distances.push_back(dist[u]);
+    for(auto h : CGAL::halfedges_around_target(halfedge(u, pm), pm))
+      if(dist.emplace(source(h, pm), dist[u] + 1).second) queue.push_back(source(h, pm));
+  }
+  const auto part = ctx.nearest_singularities(v, x1, x2, n);
+  assert(part.size == (std::min)(n, singular_distances.size()));
+  for(std::size_t k = 0; k < part.size; ++k)
+    assert(part.items[k].distance == singular_distances[k] && dist[part.items[k].vertex] == singular_distances[k]);
+}
+
+// the default scoring, whose context answers are checked after it asked them (see test_context_across_batches())
+struct Checked_scoring
+{
+  std::size_t* calls;
+  template <typename PolygonMesh, typename Context>
+  double operator()(const Q::Qzip_candidate<PolygonMesh>& c, Context& ctx) const
+  {
+    typedef boost::graph_traits<PolygonMesh> GT;
+    const double score = Q::Default_scoring()(c, ctx);
+    ++*calls;
+    if(c.source_landing == GT::null_vertex() || c.target_landing == GT::null_vertex()) return score;
+    if(*calls % 4 == 0) check_kept_nearest_singularities(ctx.mesh(), ctx, c.source_landing, c.source, c.target, 3);
+    if(*calls % 4 == 1) check_kept_nearest_singularities(ctx.mesh(), ctx, c.target_landing, c.source, c.target, 3);
+    if(*calls % 4 == 2) check_opposite_singularity_distance(ctx, c.source_landing, c.source_defect, c.source, c.target);
+    if(*calls % 4 == 3) check_nearest_singularities(ctx.mesh(), c.target, ctx);
+    return score;
+  }
+};
+
+// the closest singularities that the scoring context keeps from batch to batch (entirely while no surgery
+// came within their search, their closest part otherwise) are those of the mesh of the batch, on
+// Surface_mesh (whose removed descriptors are recycled) and on Polyhedron_3; the checks change no result.
+template <typename Mesh>
+void test_context_across_batches()
+{
+  Mesh checked, plain;
+  make_cc_sphere(checked, 3);
+  make_cc_sphere(plain, 3);
+  std::size_t calls = 0;
+  const auto stop = Q::Batch_count_stop_predicate(12);
+  const auto sc = Q::optimize_singularities(checked, Q::parameters::scoring_functor(Checked_scoring{ &calls },
+                    Q::parameters::do_end_game(false, Q::parameters::stop_predicate(stop, CGAL::parameters::random_seed(2)))));
+  const auto sp = Q::optimize_singularities(plain, Q::parameters::do_end_game(false,
+                    Q::parameters::stop_predicate(stop, CGAL::parameters::random_seed(2))));
+  std::cout << "context across batches: " << sc.initial_number_of_singularities << " -> " << sc.number_of_singularities
+            << " singularities in " << sc.batch << " batches, " << calls << " scored candidates checked" << std::endl;
+  assert(calls > 0 && sc.batch == 12);
+  assert(sc.number_of_surgeries == sp.number_of_surgeries && sorted_points(checked) == sorted_points(plain));
+}
+
 // the paper's genus-3 robustness test (Fig. 17): the closed surface of a 7 x 3 x 1 plate of voxels with
 // three holes, triangulated and refined once by Catmull-Clark (as in benchmark_optimizer)
 // the end game's smoother on a Surface_mesh without features or protected faces
@@ -670,6 +736,8 @@ int main(int argc, char** argv)
   test_feature_sliding(fandisk);
   test_protection_and_features(fandisk);
   test_travel();
+  test_context_across_batches<Surface_mesh>();
+  test_context_across_batches<Polyhedron>();
   test_corpus();
   std::cout << "done" << std::endl;
   return EXIT_SUCCESS;

@@ -56,7 +56,7 @@ vertex (`nearest_singularities()`, at most `max_nearest_singularities`, ties bro
 the singularities) are found when first asked for in the batch, by a breadth-first search around the
 vertex that stops once they are known; the variant that skips two singularities and asks for only a few
 of them stops earlier. Both are kept for the batch, and across batches for the vertices whose search
-ball no surgery touched. `distance_to_separatrix()` is a search within three edges done once per vertex
+ball no surgery touched (for the others, those closer than the closest edited vertex). `distance_to_separatrix()` is a search within three edges done once per vertex
 and batch. `distance()` runs bounded breadth-first searches, a few of which are kept.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`
@@ -200,16 +200,32 @@ public:
     kept.clear();
     kept_free.clear();
     kept_radius = 0;
-    return refresh();
+    return refresh(true);
   }
 
   // same, after a batch that edited (moved, or changed the neighbors of) the vertices `edited` and no
   // other vertex, except by surgeries it undid: the closest singularities found in earlier batches are
-  // kept for the vertices farther from the edited ones than their search went.
+  // kept for the vertices farther from the edited ones than their search went, and those closer than the
+  // edited vertices for the others (see keep_closer_than()).
   std::vector<vertex_descriptor> begin_batch(const std::vector<vertex_descriptor>& edited)
   {
-    std::vector<vertex_descriptor> singular = refresh();
-    if(kept.size() == kept_free.size()) return singular;
+    std::vector<vertex_descriptor> singular = refresh(false);
+    // the kept entries of the vertices of the mesh, by vertex index, and how many there are of each radius
+    std::vector<std::size_t> entry_at(by_index.size(), 0);
+    std::vector<std::size_t> of_radius(std::size_t(kept_radius) + 1, 0);
+    for(std::size_t k = 1; k <= kept.size(); ++k)
+    {
+      const int i = index(kept[k - 1].owner);
+      if(i < 0 || kept_slot(kept[k - 1].owner) != k) continue;
+      entry_at[std::size_t(i)] = k;
+      ++of_radius[std::size_t(kept[k - 1].radius)];
+    }
+    // breadth-first from the edited vertices, while an entry not reached yet may have an edited vertex
+    // within its radius
+    int unreached_radius = kept_radius; // the largest radius of an entry not reached yet (or less)
+    auto settle = [&]() { while(unreached_radius >= 0 && of_radius[std::size_t(unreached_radius)] == 0) --unreached_radius; };
+    settle();
+    if(unreached_radius < 0) return singular;
     if(++near_round == 0) { std::fill(near_visit.begin(), near_visit.end(), 0u); near_round = 1; }
     near_queue.clear();
     std::vector<int> level;
@@ -224,9 +240,14 @@ public:
     for(std::size_t q = 0; q < near_queue.size(); ++q)
     {
       const int u = near_queue[std::size_t(q)];
-      const std::size_t k = kept_slot(by_index[std::size_t(u)]);
-      if(k != 0 && kept[k - 1].radius >= level[q]) forget(k);
-      if(level[q] >= kept_radius) continue;
+      const std::size_t k = entry_at[std::size_t(u)];
+      if(k != 0)
+      {
+        --of_radius[std::size_t(kept[k - 1].radius)];
+        if(kept[k - 1].radius >= level[q]) keep_closer_than(k, level[q]);
+        settle();
+      }
+      if(level[q] >= unreached_radius) continue;
       for(const int* w = neighbors_begin(u); w != neighbors_end(u); ++w)
       {
         if(near_visit[std::size_t(*w)] == near_round) continue;
@@ -253,37 +274,37 @@ private:
     kept_free.push_back(k - 1);
   }
 
-  std::vector<vertex_descriptor> refresh()
+  // keeps, of the kept labels of entry k, those closer than `edited_distance`, the distance from their
+  // vertex to the closest vertex edited by the last batch (forgets the entry if none is). They are exact:
+  // a path from the vertex shorter than `edited_distance` passes through no edited vertex, so it was a path
+  // before the batch and still is one, and no path through an edited vertex is shorter; thus the
+  // singularities closer than `edited_distance` are the same and at the same distances, in the same order
+  // (their positions are checked when the labels are restored). The search that found the labels went at
+  // least that far, so it found all of them: the labels left are the start of the labels of the vertex,
+  // complete up to `edited_distance - 1` edges.
+  void keep_closer_than(std::size_t k, int edited_distance) const
   {
+    Kept& e = kept[k - 1];
+    std::size_t count = 0;
+    while(count < e.count && e.distance[count] < edited_distance) ++count;
+    if(count == 0) { forget(k); return; }
+    e.count = count;
+    e.complete = false;
+    e.radius = edited_distance - 1;
+  }
+
+  // rebuilds everything; the vertices are numbered breadth-first, or (`breadth_first` false) in the order
+  // of the previous batch. Returns the singular vertices sorted by position.
+  std::vector<vertex_descriptor> refresh(bool breadth_first)
+  {
+    const std::size_t previous_size = by_index.size();
     ++epoch;
     clear_cache();
     by_index.clear(); defects.clear(); cut.clear(); passable.clear(); adjacency_begin.clear(); adjacency.clear();
-    for(vertex_descriptor v : vertices(pm))
-    {
-      if(halfedge(v, pm) == GT::null_halfedge()) continue;
-      put(stamp, v, epoch);
-      put(index_map, v, int(by_index.size()));
-      by_index.push_back(v);
-    }
-    std::vector<vertex_descriptor> singular;
-    for(vertex_descriptor v : by_index)
-    {
-      bool c = false, p = false;
-      adjacency_begin.push_back(int(adjacency.size()));
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-      {
-        adjacency.push_back(get(index_map, source(h, pm)));
-        if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) c = true;
-        if(!is_border(h, pm) && get(fcm, face(h, pm))) p = true;
-      }
-      const int d = c ? internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect
-                      : int(adjacency.size()) - adjacency_begin.back() - 4;
-      defects.push_back(d);
-      cut.push_back(c ? 1 : 0);
-      passable.push_back(c || p ? 0 : 1);
-      if(d != 0) singular.push_back(v);
-    }
-    adjacency_begin.push_back(int(adjacency.size()));
+    // The numbering changes no answer: ties between singularities are broken by their positions, and the
+    // neighbors of a vertex are listed in rotation order whatever their numbers. Numbers close to those of
+    // the neighbors make the searches on the arrays indexed by vertex read entries close to each other.
+    std::vector<vertex_descriptor> singular = breadth_first ? number_breadth_first() : number_as_before(previous_size);
     // an order that does not depend on descriptors (the seeds' order breaks ties)
     std::sort(singular.begin(), singular.end(), [this](vertex_descriptor a, vertex_descriptor b)
     {
@@ -334,6 +355,120 @@ private:
     visit.assign(by_index.size(), 0u);
     visit_round = 0;
     return singular;
+  }
+
+  // numbers the vertices (isolated ones excepted) in breadth-first order, component by component, and
+  // builds their rows; returns the singular ones
+  std::vector<vertex_descriptor> number_breadth_first()
+  {
+    std::vector<vertex_descriptor> singular;
+    for(vertex_descriptor v : vertices(pm))
+    {
+      if(halfedge(v, pm) == GT::null_halfedge() || get(stamp, v) == epoch) continue;
+      std::size_t i = by_index.size();
+      number(v);
+      for(; i < by_index.size(); ++i) if(add_row(by_index[i])) singular.push_back(by_index[i]);
+    }
+    adjacency_begin.push_back(int(adjacency.size()));
+    return singular;
+  }
+
+  // numbers the vertices (isolated ones excepted) in the order of their numbers in the previous batch of
+  // `previous_size` vertices, those created since after them, and builds their rows; returns the singular
+  // ones. A batch creates few vertices, so the breadth-first order of the first batch mostly holds, and the
+  // mesh is read in its storage order, faster than in breadth-first order.
+  std::vector<vertex_descriptor> number_as_before(std::size_t previous_size)
+  {
+    // the key of each vertex: its previous number, unique among the vertices numbered in the previous
+    // batch (stamped with epoch - 1), or previous_size + its rank among the others
+    std::vector<vertex_descriptor> stored;
+    std::vector<int> key;
+    int created = 0;
+    for(vertex_descriptor v : vertices(pm))
+    {
+      if(halfedge(v, pm) == GT::null_halfedge()) continue;
+      const bool numbered = get(stamp, v) == epoch - 1 && std::size_t(get(index_map, v)) < previous_size;
+      stored.push_back(v);
+      key.push_back(numbered ? get(index_map, v) : int(previous_size) + created++);
+    }
+    std::vector<int> number_of_key(previous_size + std::size_t(created), 0);
+    for(int k : key) number_of_key[std::size_t(k)] = 1;
+    for(std::size_t k = 0, n = 0; k < number_of_key.size(); ++k)
+    {
+      const int used = number_of_key[k];
+      number_of_key[k] = int(n);
+      n += std::size_t(used);
+    }
+    std::vector<int>& index_of = key; // from now on, the new number of each vertex, in storage order
+    by_index.resize(stored.size());
+    for(std::size_t j = 0; j < stored.size(); ++j)
+    {
+      index_of[j] = number_of_key[std::size_t(key[j])];
+      put(stamp, stored[j], epoch);
+      put(index_map, stored[j], index_of[j]);
+      by_index[std::size_t(index_of[j])] = stored[j];
+    }
+    // the rows, built in storage order, then put in the order of the numbers
+    std::vector<vertex_descriptor> singular;
+    std::vector<int> row_begin, row;
+    defects.resize(stored.size());
+    cut.resize(stored.size());
+    passable.resize(stored.size());
+    for(std::size_t j = 0; j < stored.size(); ++j)
+    {
+      row_begin.push_back(int(row.size()));
+      if(add_row(stored[j], index_of[j], row)) singular.push_back(stored[j]);
+    }
+    row_begin.push_back(int(row.size()));
+    adjacency_begin.assign(stored.size() + 1, 0);
+    for(std::size_t j = 0; j < stored.size(); ++j)
+      adjacency_begin[std::size_t(index_of[j]) + 1] = row_begin[j + 1] - row_begin[j];
+    for(std::size_t i = 0; i < stored.size(); ++i) adjacency_begin[i + 1] += adjacency_begin[i];
+    adjacency.resize(row.size());
+    for(std::size_t j = 0; j < stored.size(); ++j)
+      std::copy(row.begin() + row_begin[j], row.begin() + row_begin[j + 1],
+                adjacency.begin() + adjacency_begin[std::size_t(index_of[j])]);
+    return singular;
+  }
+
+  // gives v the next index
+  void number(vertex_descriptor v)
+  {
+    put(stamp, v, epoch);
+    put(index_map, v, int(by_index.size()));
+    by_index.push_back(v);
+  }
+
+  // appends the row of v (numbered) to the adjacency, numbering its neighbors that are not yet, and its
+  // defect, whether it is a border/feature vertex and whether it is passable; returns whether it is singular
+  bool add_row(vertex_descriptor v)
+  {
+    adjacency_begin.push_back(int(adjacency.size()));
+    defects.emplace_back();
+    cut.emplace_back();
+    passable.emplace_back();
+    return add_row(v, int(defects.size()) - 1, adjacency, true);
+  }
+
+  // the same, v numbered i, its row appended to `row`, its neighbors numbered already unless `number_them`
+  bool add_row(vertex_descriptor v, int i, std::vector<int>& row, bool number_them = false)
+  {
+    bool c = false, p = false;
+    int valence = 0;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      const vertex_descriptor w = source(h, pm);
+      if(number_them && get(stamp, w) != epoch) number(w);
+      row.push_back(get(index_map, w));
+      ++valence;
+      if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) c = true;
+      if(!is_border(h, pm) && get(fcm, face(h, pm))) p = true;
+    }
+    const int d = c ? internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect : valence - 4;
+    defects[std::size_t(i)] = d;
+    cut[std::size_t(i)] = c ? 1 : 0;
+    passable[std::size_t(i)] = c || p ? 0 : 1;
+    return d != 0;
   }
 
 public:
