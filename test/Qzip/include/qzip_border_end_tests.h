@@ -30,11 +30,14 @@ struct Border_move_counters
   std::size_t done = 0, cancelling = 0, moved = 0, reversed = 0, redone = 0, redo_refused = 0, rolled_back = 0;
   std::size_t from_concave_corner = 0, from_convex_corner = 0, onto_corner = 0; // done Q-zips whose target is
                                                                                // a corner, whose end e is one
+  std::size_t along_border_to_convex = 0, inside_end_at_concave = 0; // done Q-zips reaching a convex corner along
+                                                                   // the border, ending inside next to a concave one
   void add(const Border_move_counters& o)
   {
     done += o.done; cancelling += o.cancelling; moved += o.moved; reversed += o.reversed; redone += o.redone;
     redo_refused += o.redo_refused; rolled_back += o.rolled_back;
     from_concave_corner += o.from_concave_corner; from_convex_corner += o.from_convex_corner; onto_corner += o.onto_corner;
+    along_border_to_convex += o.along_border_to_convex; inside_end_at_concave += o.inside_end_at_concave;
   }
   void print(const char* what) const
   {
@@ -42,7 +45,9 @@ struct Border_move_counters
               << " moving a border defect), " << reversed << " of the moves undone by their reverse Q-zip (isomorphic), "
               << redone << " redone by the reverse of the reverse and undone again (" << redo_refused << " redos refused), "
               << rolled_back << " rolled back; " << from_concave_corner << " from a concave corner, "
-              << from_convex_corner << " from a convex corner, " << onto_corner << " onto a corner" << std::endl;
+              << from_convex_corner << " from a convex corner (" << along_border_to_convex << " reached along the border), "
+              << onto_corner << " onto a corner, " << inside_end_at_concave << " ending inside next to a concave corner"
+              << std::endl;
   }
 };
 
@@ -132,7 +137,11 @@ Border_move_counters reverse_border_moves(const Mesh& m, std::size_t max_length,
         const auto plan = Q::plan_qzip(work, sketch, Q::Strip_operation(motion));
         if(!plan.is_realizable()) continue;
         const int target_faces = expected_faces(plan.target, work);
-        const int end_faces = plan.path.back() != plan.target ? expected_faces(plan.path.back(), work) : 2;
+        const int end_faces = plan.path.back() != plan.target && on_border(plan.path.back(), work)
+                                ? expected_faces(plan.path.back(), work) : 2;
+        const auto at_target = std::find(plan.path.begin(), plan.path.end(), plan.target);
+        const bool along_border = at_target != plan.path.begin() && is_border_edge(halfedge(*(at_target - 1), plan.target, work).first, work);
+        const bool inside_end = !on_border(plan.path.back(), work);
         const Qzip_invariants<Mesh> invariants(work);
         Q::Qzip_history<Mesh> history(work);
         const auto r = Q::execute_qzip(work, plan, history);
@@ -141,6 +150,8 @@ Border_move_counters reverse_border_moves(const Mesh& m, std::size_t max_length,
         c.from_concave_corner += target_faces == 3;
         c.from_convex_corner += target_faces == 1;
         c.onto_corner += end_faces != 2;
+        c.along_border_to_convex += target_faces == 1 && along_border;
+        c.inside_end_at_concave += target_faces == 3 && inside_end;
         const bool cancelled = invariants.check_after(work, r.number_of_splits, r.number_of_collapses);
         Mesh after;
         copy_mesh(work, after);
@@ -293,6 +304,8 @@ inline void test_border_defect_reverse()
   assert(l_sm.done == l_ph.done && l_sm.moved == l_ph.moved && l_sm.from_concave_corner == l_ph.from_concave_corner);
   assert(l_sm.from_concave_corner > 0 && l_sm.from_convex_corner > 0 && l_sm.onto_corner > 0);
   assert(l_sm.from_convex_corner == l_ph.from_convex_corner);
+  assert(l_sm.along_border_to_convex > 0 && l_sm.along_border_to_convex == l_ph.along_border_to_convex);
+  assert(l_sm.inside_end_at_concave > 0 && l_sm.inside_end_at_concave == l_ph.inside_end_at_concave);
   // the plans that roll back on the bundled meshes are collapses in the middle of paths close to the border
   assert(grids_sm.rolled_back == 0 && grids_ph.rolled_back == 0 && l_sm.rolled_back == 0 && l_ph.rolled_back == 0);
 }
