@@ -164,8 +164,9 @@ public:
   // extra quad to e: e is a border neighbour (the defect moves or cancels), or an interior vertex of
   // valence 3 (it becomes regular: the defects cancel; an interior e of another valence would become
   // singular and is refused); with one quad too few (two quads, valence 3), the path arrives from the
-  // interior neighbour after a collapse and ends at t (E1). Arrivals along the border at a concave corner,
-  // and after a split at a concave -1, are refused (no enumerated continuation moved the defect).
+  // interior neighbour after a collapse and ends at t (E1), or along the border as on a straight border
+  // (after the split on the side of the gap). Arrivals along the border at a concave +1, and from the
+  // interior neighbour after a split at a concave -1, are refused.
   // At a convex corner with one quad too many (two quads, valence 3) the path arrives from the interior
   // neighbour after a collapse, and the rule of a straight border applies; or along the border after the
   // split on the side of the border gap (RS with the mesh on the left of u->t, LS with it on the right: the
@@ -196,12 +197,13 @@ public:
     if(last == Strip_operation::NO_OPERATION) return Plan_status::ENDPOINT_ADJUSTMENT;
     const halfedge_descriptor ut = out(u, t);
     const bool concave = expected_faces == 3, convex = expected_faces == 1;
-    if(concave && is_cut(ut)) return Plan_status::ENDPOINT_ADJUSTMENT;
+    if(concave && is_cut(ut) && !quad_too_few) return Plan_status::ENDPOINT_ADJUSTMENT;
     if(convex && !is_cut(ut) && is_split(last)) return Plan_status::ENDPOINT_ADJUSTMENT;
     if(quad_too_few)
     {
-      if(concave) return is_collapse(last) ? Plan_status::REALIZABLE : Plan_status::ENDPOINT_ADJUSTMENT;
+      if(concave && !is_cut(ut)) return is_collapse(last) ? Plan_status::REALIZABLE : Plan_status::ENDPOINT_ADJUSTMENT;
       if(!is_cut(ut)) return Plan_status::ENDPOINT_ADJUSTMENT;
+      // along the border, on a straight piece or at a concave corner: the split on the side of the gap
       const bool mesh_on_left = !gap(ut);
       return last == (mesh_on_left ? Strip_operation::RIGHT_SPLIT : Strip_operation::LEFT_SPLIT)
                ? Plan_status::REALIZABLE : Plan_status::ENDPOINT_ADJUSTMENT;
