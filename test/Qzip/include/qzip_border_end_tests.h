@@ -30,11 +30,16 @@ struct Border_move_counters
   std::size_t done = 0, cancelling = 0, moved = 0, reversed = 0, redone = 0, redo_refused = 0, rolled_back = 0;
   std::size_t from_concave_corner = 0, from_convex_corner = 0, onto_corner = 0; // done Q-zips whose target is
                                                                                // a corner, whose end e is one
+  std::size_t along_border_to_convex = 0, inside_end_at_concave = 0; // done Q-zips reaching a convex corner along
+                                                                   // the border, ending inside next to a concave one
+  std::size_t along_border_to_concave = 0; // done Q-zips reaching a concave corner along the border
   void add(const Border_move_counters& o)
   {
     done += o.done; cancelling += o.cancelling; moved += o.moved; reversed += o.reversed; redone += o.redone;
     redo_refused += o.redo_refused; rolled_back += o.rolled_back;
     from_concave_corner += o.from_concave_corner; from_convex_corner += o.from_convex_corner; onto_corner += o.onto_corner;
+    along_border_to_convex += o.along_border_to_convex; inside_end_at_concave += o.inside_end_at_concave;
+    along_border_to_concave += o.along_border_to_concave;
   }
   void print(const char* what) const
   {
@@ -42,7 +47,9 @@ struct Border_move_counters
               << " moving a border defect), " << reversed << " of the moves undone by their reverse Q-zip (isomorphic), "
               << redone << " redone by the reverse of the reverse and undone again (" << redo_refused << " redos refused), "
               << rolled_back << " rolled back; " << from_concave_corner << " from a concave corner, "
-              << from_convex_corner << " from a convex corner, " << onto_corner << " onto a corner" << std::endl;
+              << from_convex_corner << " from a convex corner (" << along_border_to_convex << " reached along the border), "
+              << onto_corner << " onto a corner, " << inside_end_at_concave << " ending inside next to a concave corner, "
+              << along_border_to_concave << " reaching a concave corner along the border" << std::endl;
   }
 };
 
@@ -76,14 +83,27 @@ std::multiset<int> border_face_counts(const Mesh& m)
 }
 
 /// The sketches from the interior singularity at `from` to the border vertex at `to`: the shortest
-/// surgery path, and the paths that reach it along the border (mesh on the left, on the right).
+/// surgery path, and the paths that reach it along the border (mesh on the left, on the right); with
+/// `through_border_neighbours`, instead, for each border neighbour u of `to`, the shortest surgery path to u
+/// followed by u->to (the arrivals along the border from either side, at corners too).
 template <typename Mesh>
-std::array<std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>, 3>
+std::vector<std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> >
 border_end_sketches(const Mesh& m, typename boost::graph_traits<Mesh>::vertex_descriptor from,
-                    typename boost::graph_traits<Mesh>::vertex_descriptor to)
+                    typename boost::graph_traits<Mesh>::vertex_descriptor to, bool through_border_neighbours = false)
 {
-  return { CGAL::Qzip::shortest_surgery_path(m, from, to), path_along_border(m, from, 12, true, 8, to),
-           path_along_border(m, from, 12, false, 8, to) };
+  if(!through_border_neighbours)
+    return { CGAL::Qzip::shortest_surgery_path(m, from, to), path_along_border(m, from, 12, true, 8, to),
+             path_along_border(m, from, 12, false, 8, to) };
+  std::vector<std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> > out;
+  for(auto h : CGAL::halfedges_around_target(halfedge(to, m), m))
+    if(is_border_edge(h, m))
+    {
+      auto p = CGAL::Qzip::shortest_surgery_path(m, from, source(h, m));
+      if(p.empty() || std::find(p.begin(), p.end(), to) != p.end()) p.clear();
+      else p.push_back(to);
+      out.push_back(p);
+    }
+  return out;
 }
 
 /// the pairs (interior singularity, border vertex with defect +1 or -1) joined by a sketch of
@@ -113,7 +133,8 @@ std::vector<std::pair<Point, Point> > border_end_pairs(const Mesh& m, std::size_
 /// the Q-zip again, then its reverse `m` again.
 template <typename Mesh>
 Border_move_counters reverse_border_moves(const Mesh& m, std::size_t max_length,
-                                          std::vector<Mesh>* onto_convex_corner = nullptr)
+                                          std::vector<Mesh>* onto_convex_corner = nullptr,
+                                          bool through_border_neighbours = false)
 {
   namespace Q = CGAL::Qzip;
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
@@ -125,14 +146,23 @@ Border_move_counters reverse_border_moves(const Mesh& m, std::size_t max_length,
         Mesh work;
         copy_mesh(m, work);
         const std::map<Point, vertex_descriptor> at = vertices_by_position(work);
-        const auto sketch = border_end_sketches(work, at.at(pair.first), at.at(pair.second))[k];
-        if(sketch.empty()) continue;
+        const auto sketches = border_end_sketches(work, at.at(pair.first), at.at(pair.second), through_border_neighbours);
+        if(k >= sketches.size()) continue;
+        const auto& sketch = sketches[k];
+        if(sketch.empty() || (through_border_neighbours && expected_faces(sketch.back(), work) == 2)) continue;
         std::vector<Point> sketch_points;
         for(vertex_descriptor v : sketch) sketch_points.push_back(get(CGAL::vertex_point, work, v));
         const auto plan = Q::plan_qzip(work, sketch, Q::Strip_operation(motion));
         if(!plan.is_realizable()) continue;
         const int target_faces = expected_faces(plan.target, work);
-        const int end_faces = plan.path.back() != plan.target ? expected_faces(plan.path.back(), work) : 2;
+        const int end_faces = plan.path.back() != plan.target && on_border(plan.path.back(), work)
+                                ? expected_faces(plan.path.back(), work) : 2;
+        const auto at_target = std::find(plan.path.begin(), plan.path.end(), plan.target);
+        const bool along_border = at_target != plan.path.begin() && is_border_edge(halfedge(*(at_target - 1), plan.target, work).first, work);
+        const bool inside_end = !on_border(plan.path.back(), work);
+        const int target_defect = CGAL::Qzip::vertex_defect(plan.target, work);
+        const int end_defect = CGAL::Qzip::vertex_defect(plan.path.back(), work);
+        const Point end_point = get(CGAL::vertex_point, work, plan.path.back());
         const Qzip_invariants<Mesh> invariants(work);
         Q::Qzip_history<Mesh> history(work);
         const auto r = Q::execute_qzip(work, plan, history);
@@ -141,7 +171,12 @@ Border_move_counters reverse_border_moves(const Mesh& m, std::size_t max_length,
         c.from_concave_corner += target_faces == 3;
         c.from_convex_corner += target_faces == 1;
         c.onto_corner += end_faces != 2;
+        c.along_border_to_convex += target_faces == 1 && along_border;
+        c.inside_end_at_concave += target_faces == 3 && inside_end;
+        c.along_border_to_concave += target_faces == 3 && along_border;
         const bool cancelled = invariants.check_after(work, r.number_of_splits, r.number_of_collapses);
+        if(!cancelled && end_point != pair.second) // the defect moved onto e, as planned
+          assert(Q::vertex_defect(vertices_by_position(work).at(end_point), work) == end_defect + target_defect);
         Mesh after;
         copy_mesh(work, after);
         history.undo_all();
@@ -275,6 +310,22 @@ inline void test_border_defect_reverse()
     relax_inside(convex_ph[i]);
     l_ph.add(reverse_border_moves(convex_ph[i], 12));
   }
+  // corners reached along the border from either side (the shortest path to a border neighbour, then to the corner)
+  Border_move_counters along_sm, along_ph;
+  for(const auto& layout : l_shape_layouts())
+  {
+    Surface_mesh sm;
+    make_l_shape_with_chains(sm, 20, 14, 10, 7, layout);
+    along_sm.add(reverse_border_moves<Surface_mesh>(sm, 12, nullptr, true));
+    Polyhedron ph;
+    make_l_shape_with_chains(ph, 20, 14, 10, 7, layout);
+    along_ph.add(reverse_border_moves<Polyhedron>(ph, 12, nullptr, true));
+  }
+  for(std::size_t i = 0; i < convex_sm.size(); ++i)
+  {
+    along_sm.add(reverse_border_moves<Surface_mesh>(convex_sm[i], 12, nullptr, true));
+    along_ph.add(reverse_border_moves<Polyhedron>(convex_ph[i], 12, nullptr, true));
+  }
   for(const char* f : { "data/polylap_suzanne_half.obj", "data/trimesh_target.obj" })
   {
     Surface_mesh m;
@@ -287,12 +338,19 @@ inline void test_border_defect_reverse()
   l_sm.print("border defects moved and reversed, L-shaped grids, Surface_mesh");
   l_ph.print("border defects moved and reversed, L-shaped grids, Polyhedron_3");
   real.print("border defects moved and reversed, bundled meshes with borders, Surface_mesh");
+  along_sm.print("corners reached through each border neighbour, L-shaped grids, Surface_mesh");
+  along_ph.print("corners reached through each border neighbour, L-shaped grids, Polyhedron_3");
   for(const Border_move_counters* c : { &grids_sm, &grids_ph, &l_sm, &l_ph, &real })
     assert(c->moved > 0 && c->reversed == c->moved && c->redone + c->redo_refused == c->moved);
   assert(grids_sm.done == grids_ph.done && grids_sm.moved == grids_ph.moved);
   assert(l_sm.done == l_ph.done && l_sm.moved == l_ph.moved && l_sm.from_concave_corner == l_ph.from_concave_corner);
   assert(l_sm.from_concave_corner > 0 && l_sm.from_convex_corner > 0 && l_sm.onto_corner > 0);
   assert(l_sm.from_convex_corner == l_ph.from_convex_corner);
+  assert(l_sm.along_border_to_convex > 0 && l_sm.along_border_to_convex == l_ph.along_border_to_convex);
+  assert(l_sm.inside_end_at_concave > 0 && l_sm.inside_end_at_concave == l_ph.inside_end_at_concave);
+  assert(along_sm.along_border_to_convex > 0 && along_sm.along_border_to_concave > 0 && along_sm.rolled_back == 0);
+  assert(along_sm.done == along_ph.done && along_sm.moved == along_ph.moved && along_ph.rolled_back == 0 &&
+         along_sm.reversed == along_sm.moved && along_ph.reversed == along_ph.moved);
   // the plans that roll back on the bundled meshes are collapses in the middle of paths close to the border
   assert(grids_sm.rolled_back == 0 && grids_ph.rolled_back == 0 && l_sm.rolled_back == 0 && l_ph.rolled_back == 0);
 }

@@ -1,6 +1,8 @@
 // Tests of feature end points: Q-zips from an interior singularity to a vertex on a feature curve (a vertex
 // of a constrained edge) with one quad too many or too few in the sector the path arrives in. Every done
-// Q-zip keeps the invariants, the feature edges, and is undone by its history and by its reverse Q-zip.
+// Q-zip keeps the invariants, the feature edges, and is undone by its history and by its reverse Q-zip. The
+// planted grids run on Surface_mesh (feature flags in a property of the mesh) and on Polyhedron_3 (in a dynamic
+// edge property, an associative map); the CAD meshes on Surface_mesh.
 #ifndef QZIP_FEATURE_END_TESTS_H
 #define QZIP_FEATURE_END_TESTS_H
 
@@ -27,29 +29,61 @@
 
 namespace qzip_test {
 
-typedef Surface_mesh::Property_map<boost::graph_traits<Surface_mesh>::edge_descriptor, bool> Feature_map;
+/// The feature flags of the edges of a mesh: a dynamic edge property (an associative map from the edges, which
+/// the Q-zip keeps whole) for meshes without properties of their own, such as Polyhedron_3 ...
+template <typename Mesh>
+struct Feature_flags
+{
+  typedef typename boost::property_map<Mesh, CGAL::dynamic_edge_property_t<bool> >::type Map;
+  static Map create(Mesh& m) { return get(CGAL::dynamic_edge_property_t<bool>(), m); }
+};
+
+/// ... and a property of the mesh for Surface_mesh ("e:qzip_test_feature")
+template <>
+struct Feature_flags<Surface_mesh>
+{
+  typedef Surface_mesh::Property_map<Surface_mesh::Edge_index, bool> Map;
+  static Map create(Surface_mesh& m) { return m.add_property_map<Surface_mesh::Edge_index, bool>("e:qzip_test_feature", false).first; }
+};
+
+template <typename Mesh>
+using Feature_map = typename Feature_flags<Mesh>::Map;
+
 typedef std::set<std::pair<Point, Point> > Feature_segments; // the feature edges by the positions of their ends
 
 inline std::pair<Point, Point> segment_key(const Point& a, const Point& b) { return std::minmax(a, b); }
 
-/// the feature map of `m` ("e:qzip_test_feature"), set on the edges whose ends are at the positions of `segments`
-inline Feature_map mark_features(Surface_mesh& m, const Feature_segments& segments)
+template <typename Mesh>
+const Point& position(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& m)
+{ return get(CGAL::vertex_point, m, v); }
+
+template <typename Mesh>
+std::pair<Point, Point> edge_key(typename boost::graph_traits<Mesh>::edge_descriptor e, const Mesh& m)
+{ return segment_key(position(source(halfedge(e, m), m), m), position(target(halfedge(e, m), m), m)); }
+
+/// the feature map of `m`, set on the edges whose ends are at the positions of `segments`
+template <typename Mesh>
+Feature_map<Mesh> mark_features(Mesh& m, const Feature_segments& segments)
 {
-  Feature_map f = m.add_property_map<Surface_mesh::Edge_index, bool>("e:qzip_test_feature", false).first;
-  for(auto e : edges(m))
-  {
-    const auto h = halfedge(e, m);
-    put(f, e, segments.count(segment_key(m.point(source(h, m)), m.point(target(h, m)))) > 0);
-  }
+  const Feature_map<Mesh> f = Feature_flags<Mesh>::create(m);
+  for(auto e : edges(m)) put(f, e, segments.count(edge_key(e, m)) > 0);
   return f;
 }
 
+/// copies `m` into `out` with its feature edges `segments`, and returns the feature map of the copy
+template <typename Mesh>
+Feature_map<Mesh> copy_with_features(const Mesh& m, Mesh& out, const Feature_segments& segments)
+{
+  copy_mesh(m, out);
+  return mark_features(out, segments);
+}
+
 /// the feature edges of `m` by the positions of their ends
-inline Feature_segments feature_segments(const Surface_mesh& m, const Feature_map& f)
+template <typename Mesh>
+Feature_segments feature_segments(const Mesh& m, const Feature_map<Mesh>& f)
 {
   Feature_segments out;
-  for(auto e : edges(m))
-    if(get(f, e)) out.insert(segment_key(m.point(source(halfedge(e, m), m)), m.point(target(halfedge(e, m), m))));
+  for(auto e : edges(m)) if(get(f, e)) out.insert(edge_key(e, m));
   return out;
 }
 
@@ -68,18 +102,20 @@ inline Feature_segments sharp_segments(const Surface_mesh& m, double degrees = 6
   return out;
 }
 
-inline bool on_feature(Surface_mesh::Vertex_index v, const Surface_mesh& m, const Feature_map& f)
+template <typename Mesh>
+bool on_feature(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& m, const Feature_map<Mesh>& f)
 {
   for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) if(get(f, edge(h, m))) return true;
   return false;
 }
 
 /// whether the feature curve turns at `v` by more than 45 degrees, or branches or ends there
-inline bool curve_turns_at(Surface_mesh::Vertex_index v, const Surface_mesh& m, const Feature_map& f)
+template <typename Mesh>
+bool curve_turns_at(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& m, const Feature_map<Mesh>& f)
 {
   std::vector<Point> ends;
-  for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) if(get(f, edge(h, m))) ends.push_back(m.point(source(h, m)));
-  return ends.size() != 2 || CGAL::approximate_angle(ends[0], m.point(v), ends[1]) < 135.;
+  for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) if(get(f, edge(h, m))) ends.push_back(position(source(h, m), m));
+  return ends.size() != 2 || CGAL::approximate_angle(ends[0], position(v, m), ends[1]) < 135.;
 }
 
 /// The invariants of a Q-zip ending at a feature, measured on the whole mesh before it, independently of the
@@ -89,10 +125,12 @@ inline bool curve_turns_at(Surface_mesh::Vertex_index v, const Surface_mesh& m, 
 /// of its sectors (the faces between two consecutive feature or border edges around it), whose number of faces
 /// is compared with the one it should have, frozen before from the geometry (a sector is named by the positions
 /// of its vertex and of its two bounding edges, which the Q-zip does not move).
+template <typename Mesh>
 class Feature_invariants
 {
-  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
-  typedef boost::graph_traits<Surface_mesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  typedef qzip_test::Feature_map<Mesh> Feature_map;
   typedef std::tuple<Point, Point, Point> Sector_key;
 
   long chi;
@@ -103,10 +141,10 @@ class Feature_invariants
 
   // calls f(key, faces, angle) for every sector of the cut vertex v
   template <typename F>
-  static void for_each_sector(vertex_descriptor v, const Surface_mesh& m, const Feature_map& fm, F f)
+  static void for_each_sector(vertex_descriptor v, const Mesh& m, const Feature_map& fm, F f)
   {
     auto is_cut = [&](halfedge_descriptor h) { return is_border_edge(h, m) || get(fm, edge(h, m)); };
-    halfedge_descriptor start = boost::graph_traits<Surface_mesh>::null_halfedge();
+    halfedge_descriptor start = boost::graph_traits<Mesh>::null_halfedge();
     for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) if(is_cut(h)) { start = h; break; }
     int q = 0;
     double theta = 0;
@@ -115,12 +153,12 @@ class Feature_invariants
     {
       if(!is_border(h, m))
       {
-        theta += CGAL::approximate_angle(m.point(source(h, m)), m.point(v), m.point(target(next(h, m), m))) * CGAL_PI / 180.;
+        theta += CGAL::approximate_angle(position(source(h, m), m), position(v, m), position(target(next(h, m), m), m)) * CGAL_PI / 180.;
         ++q;
       }
       if(is_cut(next(h, m)))
       {
-        if(q > 0) f(Sector_key(m.point(v), m.point(source(first, m)), m.point(target(next(h, m), m))), q, theta);
+        if(q > 0) f(Sector_key(position(v, m), position(source(first, m), m), position(target(next(h, m), m), m)), q, theta);
         first = opposite(next(h, m), m);
         q = 0;
         theta = 0;
@@ -128,11 +166,11 @@ class Feature_invariants
     }
   }
 
-  static bool is_cut_vertex(vertex_descriptor v, const Surface_mesh& m, const Feature_map& fm)
+  static bool is_cut_vertex(vertex_descriptor v, const Mesh& m, const Feature_map& fm)
   { return on_border(v, m) || on_feature(v, m, fm); }
 
 public:
-  Feature_invariants(const Surface_mesh& m, const Feature_map& fm)
+  Feature_invariants(const Mesh& m, const Feature_map& fm)
     : chi(euler_characteristic(m)), faces(CGAL::faces(m).size()), segments(feature_segments(m, fm))
   {
     for(vertex_descriptor v : vertices(m))
@@ -144,7 +182,7 @@ public:
 
   /// the sorted singularity codes: the valence of an irregular interior vertex, 100 + the defect of an
   /// irregular sector
-  std::vector<int> singularity_codes(const Surface_mesh& m, const Feature_map& fm) const
+  std::vector<int> singularity_codes(const Mesh& m, const Feature_map& fm) const
   {
     std::vector<int> out;
     for(vertex_descriptor v : vertices(m))
@@ -162,10 +200,10 @@ public:
   }
 
   /// the feature edges by position, as before
-  bool same_features(const Surface_mesh& m, const Feature_map& fm) const { return feature_segments(m, fm) == segments; }
+  bool same_features(const Mesh& m, const Feature_map& fm) const { return feature_segments(m, fm) == segments; }
 
   /// asserts the invariants after a done Q-zip; returns whether singularities were cancelled
-  bool check_after(const Surface_mesh& m, const Feature_map& fm, std::size_t splits, std::size_t collapses) const
+  bool check_after(const Mesh& m, const Feature_map& fm, std::size_t splits, std::size_t collapses) const
   {
     assert(CGAL::is_valid_polygon_mesh(m) && all_faces_have_degree(m, 4));
     assert(euler_characteristic(m) == chi);
@@ -214,16 +252,16 @@ struct Feature_move_counters
 /// The sketches from the interior singularity `s` to the feature vertex `t`: the shortest surgery path, and
 /// for each neighbour `u` of `t` through which a path may pass, the shortest surgery path to `u` followed by
 /// `u->t` (arrivals from every direction), when simple and of at most `max_length` edges.
-inline std::vector<std::vector<Surface_mesh::Vertex_index> >
-feature_end_sketches(const Surface_mesh& m, const Feature_map& fm, Surface_mesh::Vertex_index s,
-                     Surface_mesh::Vertex_index t, std::size_t max_length)
+template <typename Mesh, typename vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor>
+std::vector<std::vector<vertex_descriptor> >
+feature_end_sketches(const Mesh& m, const Feature_map<Mesh>& fm, vertex_descriptor s, vertex_descriptor t, std::size_t max_length)
 {
   namespace Q = CGAL::Qzip;
-  std::vector<std::vector<Surface_mesh::Vertex_index> > out;
-  auto keep = [&](const std::vector<Surface_mesh::Vertex_index>& p)
+  std::vector<std::vector<vertex_descriptor> > out;
+  auto keep = [&](const std::vector<vertex_descriptor>& p)
   {
     if(p.size() < 2 || p.size() > max_length + 1) return;
-    std::vector<Surface_mesh::Vertex_index> sorted(p);
+    std::vector<vertex_descriptor> sorted(p);
     std::sort(sorted.begin(), sorted.end());
     if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return;
     if(std::find(out.begin(), out.end(), p) == out.end()) out.push_back(p);
@@ -242,13 +280,14 @@ feature_end_sketches(const Surface_mesh& m, const Feature_map& fm, Surface_mesh:
 }
 
 /// the vertices at most `radius` edges from `t`
-inline std::set<Surface_mesh::Vertex_index> ball(const Surface_mesh& m, Surface_mesh::Vertex_index t, std::size_t radius)
+template <typename Mesh, typename vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor>
+std::set<vertex_descriptor> ball(const Mesh& m, vertex_descriptor t, std::size_t radius)
 {
-  std::set<Surface_mesh::Vertex_index> seen = { t };
-  std::vector<Surface_mesh::Vertex_index> ring = { t };
+  std::set<vertex_descriptor> seen = { t };
+  std::vector<vertex_descriptor> ring = { t };
   for(std::size_t k = 0; k < radius; ++k)
   {
-    std::vector<Surface_mesh::Vertex_index> next_ring;
+    std::vector<vertex_descriptor> next_ring;
     for(auto v : ring)
       for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m))
         if(seen.insert(source(h, m)).second) next_ring.push_back(source(h, m));
@@ -257,22 +296,32 @@ inline std::set<Surface_mesh::Vertex_index> ball(const Surface_mesh& m, Surface_
   return seen;
 }
 
+/// the plan of the sketch through the positions `sketch` on `m` (a copy of the mesh the sketch was found on)
+template <typename Mesh>
+CGAL::Qzip::Surgery_plan<Mesh> plan_on_copy(const Mesh& m, const Feature_map<Mesh>& fm, const std::vector<Point>& sketch,
+                                            CGAL::Qzip::Strip_operation motion)
+{
+  const auto at = vertices_by_position(m);
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> path;
+  for(const Point& p : sketch) path.push_back(at.at(p));
+  return CGAL::Qzip::plan_qzip(m, path, motion, CGAL::parameters::edge_is_constrained_map(fm));
+}
+
 /// Every interior singularity within `max_length` edges of a feature vertex with defect +1 or -1 (at most
 /// `max_targets` of them), every sketch of `feature_end_sketches()`, four motions. A realizable plan is executed
 /// on a copy of `m` (with the feature edges `segments`): the Q-zip keeps the invariants (Feature_invariants) and
 /// is undone exactly by its history; when it moved the feature defect it must have a reverse Q-zip, which gives
-/// back a mesh isomorphic to `m` with the same feature edges.
-inline Feature_move_counters feature_end_moves(const Surface_mesh& m, const Feature_segments& segments,
-                                               std::size_t max_length, std::size_t max_targets)
+/// back a mesh isomorphic to `m` with the same feature edges (checked on another copy: the history, which undoes
+/// the Q-zip on the first, re-creates elements with new descriptors).
+template <typename Mesh>
+Feature_move_counters feature_end_moves(const Mesh& m, const Feature_segments& segments,
+                                        std::size_t max_length, std::size_t max_targets)
 {
   namespace Q = CGAL::Qzip;
-  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   Feature_move_counters c;
-  Surface_mesh base;
-  copy_mesh(m, base); // no removed elements: a copy by assignment has the same descriptors
-  mark_features(base, segments);
-  auto features_of = [](Surface_mesh& x) { return x.property_map<Surface_mesh::Edge_index, bool>("e:qzip_test_feature").first; };
-  const Feature_map fbase = features_of(base);
+  Mesh base;
+  const Feature_map<Mesh> fbase = copy_with_features(m, base, segments);
   const auto np_base = CGAL::parameters::edge_is_constrained_map(fbase);
   std::size_t targets = 0;
   for(vertex_descriptor t : vertices(base))
@@ -288,17 +337,26 @@ inline Feature_move_counters feature_end_moves(const Surface_mesh& m, const Feat
         {
           ++c.plans;
           const auto plan = Q::plan_qzip(base, sketch, Q::Strip_operation(motion), np_base);
+          if(!plan.is_realizable() && plan.status != Q::Plan_status::EXECUTION_WOULD_FAIL)
+          {
+            ++c.refused[plan.status];
+            continue;
+          }
+          std::vector<Point> sketch_points;
+          for(vertex_descriptor v : sketch) sketch_points.push_back(position(v, base));
+          Mesh work;
+          const Feature_map<Mesh> fm = copy_with_features(base, work, segments);
+          const auto np = CGAL::parameters::edge_is_constrained_map(fm);
+          const auto plan_work = plan_on_copy(work, fm, sketch_points, Q::Strip_operation(motion));
+          assert(plan_work.status == plan.status && plan_work.path.size() == plan.path.size());
           if(!plan.is_realizable())
           {
             ++c.refused[plan.status];
-            if(plan.status != Q::Plan_status::EXECUTION_WOULD_FAIL) continue;
             // the simulation's prediction: forced through the executor, the plan fails and is rolled back
             ++c.predicted[plan.predicted_failure];
-            Q::Surgery_plan<Surface_mesh> forced = plan;
+            Q::Surgery_plan<Mesh> forced = plan_work;
             forced.status = Q::Plan_status::REALIZABLE;
-            Surface_mesh work(base);
-            const Feature_map fm = features_of(work);
-            const auto r = Q::execute_qzip(work, forced, CGAL::parameters::edge_is_constrained_map(fm));
+            const auto r = Q::execute_qzip(work, forced, np);
             assert(!r.is_done() && r.failure == plan.predicted_failure);
             assert(are_isomorphic(work, base) && feature_segments(work, fm) == segments);
             continue;
@@ -306,12 +364,9 @@ inline Feature_move_counters feature_end_moves(const Surface_mesh& m, const Feat
           assert(plan.target == t);
           const vertex_descriptor end = plan.path.back();
           const int end_defect = Q::vertex_defect(end, base, np_base);
-          Surface_mesh work(base);
-          const Feature_map fm = features_of(work);
-          const auto np = CGAL::parameters::edge_is_constrained_map(fm);
-          const Feature_invariants invariants(work, fm);
-          Q::Qzip_history<Surface_mesh> history(work);
-          const auto r = Q::execute_qzip(work, plan, history, np);
+          const Feature_invariants<Mesh> invariants(work, fm);
+          Q::Qzip_history<Mesh> history(work);
+          const auto r = Q::execute_qzip(work, plan_work, history, np);
           if(!r.is_done())
           {
             ++c.rolled_back;
@@ -325,11 +380,10 @@ inline Feature_move_counters feature_end_moves(const Surface_mesh& m, const Feat
           if(!cancelled && end != t)
           {
             // the defect left the target for the end of the path, a feature vertex that kept its place
-            const vertex_descriptor end_after = vertices_by_position(work).at(base.point(end));
+            const vertex_descriptor end_after = vertices_by_position(work).at(position(end, base));
             assert(on_feature(end_after, work, fm));
             assert(Q::vertex_defect(end_after, work, np) == end_defect + Q::vertex_defect(t, base, np_base));
           }
-          Surface_mesh after(work);
           history.undo_all();
           assert(CGAL::is_valid_polygon_mesh(work) && are_isomorphic(work, base) && invariants.same_features(work, fm));
           assert(sorted_positions(work) == sorted_positions(base));
@@ -341,11 +395,14 @@ inline Feature_move_counters feature_end_moves(const Surface_mesh& m, const Feat
           }
           ++c.moved;
           c.onto_other_defect += end_defect != 0;
-          // the mesh after the Q-zip, undone by the reverse Q-zip
+          // the same Q-zip on another copy, undone by its reverse Q-zip
           if(r.reverse_status != Q::Reverse_qzip_status::AVAILABLE) { ++c.no_reverse[r.reverse_status]; continue; }
-          Surface_mesh& second = after;
-          const Feature_map f2 = features_of(second);
-          const auto back = Q::reverse_qzip(second, r, CGAL::parameters::edge_is_constrained_map(f2));
+          Mesh second;
+          const Feature_map<Mesh> f2 = copy_with_features(base, second, segments);
+          const auto np2 = CGAL::parameters::edge_is_constrained_map(f2);
+          const auto again = Q::execute_qzip(second, plan_on_copy(second, f2, sketch_points, Q::Strip_operation(motion)), np2);
+          assert(again.is_done() && again.reverse_status == Q::Reverse_qzip_status::AVAILABLE);
+          const auto back = Q::reverse_qzip(second, again, np2);
           assert(back.is_done() && CGAL::is_valid_polygon_mesh(second) && are_isomorphic(second, base));
           assert(invariants.same_features(second, f2));
           ++c.reversed;
@@ -355,26 +412,32 @@ inline Feature_move_counters feature_end_moves(const Surface_mesh& m, const Feat
   return c;
 }
 
+/// removes the elements marked as removed (Surface_mesh), so that the vertices are numbered from 0 again
+inline void collect_garbage(Surface_mesh& m) { m.collect_garbage(); }
+/// nothing to do for the other meshes
+template <typename Mesh> void collect_garbage(Mesh&) {}
+
 /// A flat nx x ny grid with a feature polyline through grid points (`polyline`, axis-parallel steps) and chains of
 /// collapses planted in it as in make_l_shape_with_chains(): each chain runs along a row or column from
 /// `chain[0], chain[1]` (inside) to `chain[2], chain[3]` (on the feature) and collapses the quads on the left of
 /// its edges (`chain[4]` = 1) or on their right (0), leaving a 3-5 pair at its start and a feature step at its
 /// end. The vertices off the feature and the border are then relaxed. Returns the feature edges.
-inline Feature_segments make_grid_with_feature(Surface_mesh& m, int nx, int ny, const std::vector<std::array<int, 2> >& polyline,
-                                               const std::vector<std::array<int, 5> >& chains)
+template <typename Mesh>
+Feature_segments make_grid_with_feature(Mesh& m, int nx, int ny, const std::vector<std::array<int, 2> >& polyline,
+                                        const std::vector<std::array<int, 5> >& chains)
 {
-  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   make_quad_grid(m, nx, ny);
   std::map<std::pair<int, int>, vertex_descriptor> at;
   for(vertex_descriptor v : vertices(m))
-    at[std::make_pair(int(std::lround(m.point(v).x())), int(std::lround(m.point(v).y())))] = v;
+    at[std::make_pair(int(std::lround(position(v, m).x())), int(std::lround(position(v, m).y())))] = v;
   Feature_segments segments;
   for(std::size_t k = 0; k + 1 < polyline.size(); ++k)
   {
     const int dx = (polyline[k + 1][0] > polyline[k][0]) - (polyline[k + 1][0] < polyline[k][0]);
     const int dy = (polyline[k + 1][1] > polyline[k][1]) - (polyline[k + 1][1] < polyline[k][1]);
     for(int x = polyline[k][0], y = polyline[k][1]; x != polyline[k + 1][0] || y != polyline[k + 1][1]; x += dx, y += dy)
-      segments.insert(segment_key(m.point(at.at(std::make_pair(x, y))), m.point(at.at(std::make_pair(x + dx, y + dy)))));
+      segments.insert(segment_key(position(at.at(std::make_pair(x, y)), m), position(at.at(std::make_pair(x + dx, y + dy)), m)));
   }
   for(const std::array<int, 5>& chain : chains)
   {
@@ -390,16 +453,17 @@ inline Feature_segments make_grid_with_feature(Surface_mesh& m, int nx, int ny, 
       CGAL::Qzip::quad_collapse(h, m);
     }
   }
-  m.collect_garbage();
+  collect_garbage(m);
   std::set<Point> fixed;
   for(const auto& s : segments) { fixed.insert(s.first); fixed.insert(s.second); }
+  const auto vpm = get(CGAL::vertex_point, m);
   for(int it = 0; it < 30; ++it)
     for(vertex_descriptor v : vertices(m))
     {
-      if(on_border(v, m) || fixed.count(m.point(v))) continue;
+      if(on_border(v, m) || fixed.count(get(vpm, v))) continue;
       double x = 0, y = 0, n = 0;
-      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) { x += m.point(source(h, m)).x(); y += m.point(source(h, m)).y(); ++n; }
-      m.point(v) = Point(x / n, y / n, 0);
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) { x += get(vpm, source(h, m)).x(); y += get(vpm, source(h, m)).y(); ++n; }
+      put(vpm, v, Point(x / n, y / n, 0));
     }
   return segments;
 }
@@ -413,7 +477,7 @@ inline Feature_segments make_grid_with_feature(Surface_mesh& m, int nx, int ny, 
 inline bool plant_feature_chain(Surface_mesh& m, const Feature_segments& segments, std::size_t skip, std::size_t length)
 {
   typedef boost::graph_traits<Surface_mesh>::vertex_descriptor vertex_descriptor;
-  const Feature_map f = mark_features(m, segments);
+  const Feature_map<Surface_mesh> f = mark_features(m, segments);
   auto regular_inside = [&](vertex_descriptor v) { return !on_border(v, m) && valence(v, m) == 4 && !on_feature(v, m, f); };
   for(vertex_descriptor t : vertices(m))
   {
@@ -450,7 +514,7 @@ inline void test_feature_end_sketch_orientation()
   namespace Q = CGAL::Qzip;
   Surface_mesh m;
   const Feature_segments segments = make_grid_with_feature(m, 16, 12, { { { 0, 6 } }, { { 16, 6 } } }, { { { 5, 1, 5, 6, 1 } } });
-  const Feature_map f = mark_features(m, segments);
+  const Feature_map<Surface_mesh> f = mark_features(m, segments);
   const auto np = CGAL::parameters::edge_is_constrained_map(f);
   std::size_t realizable = 0, along = 0;
   for(auto t : vertices(m))
@@ -504,6 +568,7 @@ inline void test_feature_end_moves()
     { turning, { { 8, 1, 8, 6, 1 } } }, { turning, { { 8, 1, 8, 6, 0 } } }, { turning, { { 3, 10, 8, 10, 1 } } },
     { turning, { { 13, 9, 8, 9, 0 } } }, { turning, { { 7, 1, 7, 6, 0 } } }, { turning, { { 9, 1, 9, 6, 1 } } },
     { turning, { { 13, 7, 8, 7, 1 } } } };
+  Feature_move_counters grids_ph;
   for(std::size_t k = 0; k < layouts.size(); ++k)
   {
     Surface_mesh m;
@@ -511,6 +576,10 @@ inline void test_feature_end_moves()
     const Feature_move_counters c = feature_end_moves(m, segments, 10, 8);
     c.print("feature layout " + std::to_string(k));
     grids.add(c);
+    Polyhedron ph;
+    const Feature_segments segments_ph = make_grid_with_feature(ph, 16, 12, layouts[k].first, layouts[k].second);
+    assert(segments_ph == segments);
+    grids_ph.add(feature_end_moves(ph, segments_ph, 10, 8));
   }
   // fandisk has a single feature defect, with no singularity a surgery path reaches: chains planted at four
   // feature vertices
@@ -544,8 +613,11 @@ inline void test_feature_end_moves()
     real.add(c);
   }
   grids.print("feature defects, planted grids");
+  grids_ph.print("feature defects, planted grids, Polyhedron_3 (feature flags in a dynamic edge property)");
   real.print("feature defects, CAD meshes");
-  for(const Feature_move_counters* c : { &grids, &real })
+  assert(grids_ph.plans == grids.plans && grids_ph.done == grids.done && grids_ph.moved == grids.moved &&
+         grids_ph.cancelling == grids.cancelling && grids_ph.refused == grids.refused);
+  for(const Feature_move_counters* c : { &grids, &grids_ph, &real })
     assert(c->moved > 0 && c->reversed == c->moved && c->rolled_back == 0 && c->no_reverse.empty());
   assert(grids.with_quad_too_few > 0 && grids.at_turn > 0);
   test_feature_end_sketch_orientation();

@@ -159,14 +159,20 @@ public:
   //
   // At a concave corner (`expected_faces` 3, found by the same enumeration on L-shaped grids): with one
   // quad too many (four quads, valence 5), the collapses are handled as on a straight border, and after
-  // a split e is the border neighbour two steps from u on the side of the split (counterclockwise index
-  // 2 after LS, valence - 2 after RS), whichever side of it the gap lies, and t repeats the split; with one
-  // quad too few (two quads, valence 3), the path arrives from the interior neighbour after a collapse
-  // and ends at t (E1). Arrivals along the border at a concave corner are refused (not enumerated).
+  // a split e is the neighbour two steps from u on the side of the split (counterclockwise index 2 after
+  // LS, valence - 2 after RS), whichever side of it the gap lies, and t repeats the split, which hands its
+  // extra quad to e: e is a border neighbour (the defect moves or cancels), or an interior vertex of
+  // valence 3 (it becomes regular: the defects cancel; an interior e of another valence would become
+  // singular and is refused); with one quad too few (two quads, valence 3), the path arrives from the
+  // interior neighbour after a collapse and ends at t (E1), or along the border as on a straight border
+  // (after the split on the side of the gap). Arrivals along the border at a concave +1, and from the
+  // interior neighbour after a split at a concave -1, are refused.
   // At a convex corner with one quad too many (two quads, valence 3) the path arrives from the interior
-  // neighbour after a collapse, and the rule of a straight border applies; after a split nothing moved
-  // the defect, and along the border the straight rule worked for some arrivals only (the others roll
-  // back, for a reason we have not characterised): both are refused.
+  // neighbour after a collapse, and the rule of a straight border applies; or along the border after the
+  // split on the side of the border gap (RS with the mesh on the left of u->t, LS with it on the right: the
+  // opposite of a straight border; after the split on the side of the mesh the chain always leaves a new
+  // singularity), and goes on along the border to e as on a straight border. After a split from the
+  // interior neighbour no continuation moved the defect: refused.
   //
   // A feature end (a vertex of a constrained edge) is prepared by the same rules in the sector of its fan
   // that the path arrives in (prepare_sector_end()): the other sectors play the part of the border gap,
@@ -190,21 +196,24 @@ public:
     const Strip_operation last = ops[n - 2];
     if(last == Strip_operation::NO_OPERATION) return Plan_status::ENDPOINT_ADJUSTMENT;
     const halfedge_descriptor ut = out(u, t);
-    const bool concave = expected_faces == 3;
-    if(concave && is_cut(ut)) return Plan_status::ENDPOINT_ADJUSTMENT;
-    if(expected_faces == 1 && (is_cut(ut) || is_split(last))) return Plan_status::ENDPOINT_ADJUSTMENT;
+    const bool concave = expected_faces == 3, convex = expected_faces == 1;
+    if(concave && is_cut(ut) && !quad_too_few) return Plan_status::ENDPOINT_ADJUSTMENT;
+    if(convex && !is_cut(ut) && is_split(last)) return Plan_status::ENDPOINT_ADJUSTMENT;
     if(quad_too_few)
     {
-      if(concave) return is_collapse(last) ? Plan_status::REALIZABLE : Plan_status::ENDPOINT_ADJUSTMENT;
+      if(concave && !is_cut(ut)) return is_collapse(last) ? Plan_status::REALIZABLE : Plan_status::ENDPOINT_ADJUSTMENT;
       if(!is_cut(ut)) return Plan_status::ENDPOINT_ADJUSTMENT;
+      // along the border, on a straight piece or at a concave corner: the split on the side of the gap
       const bool mesh_on_left = !gap(ut);
       return last == (mesh_on_left ? Strip_operation::RIGHT_SPLIT : Strip_operation::LEFT_SPLIT)
                ? Plan_status::REALIZABLE : Plan_status::ENDPOINT_ADJUSTMENT;
     }
     if(is_cut(ut))
     {
-      const bool mesh_on_left = !gap(ut);
-      if(last != (mesh_on_left ? Strip_operation::LEFT_SPLIT : Strip_operation::RIGHT_SPLIT))
+      // on a straight piece of border the split on the side of the mesh, at a convex corner the one on the
+      // side of the border gap
+      const bool mesh_on_left = !gap(ut), split_on_left = mesh_on_left != convex;
+      if(last != (split_on_left ? Strip_operation::LEFT_SPLIT : Strip_operation::RIGHT_SPLIT))
         return Plan_status::ENDPOINT_ADJUSTMENT;
       // the other border edge at t, across the border gap from t->u
       const halfedge_descriptor te = mesh_on_left ? ccw(opposite(ut, pm), pm) : cw(opposite(ut, pm), pm);
@@ -231,7 +240,11 @@ public:
                 : (concave && last == Strip_operation::RIGHT_SPLIT ? deg - 2 : 2);
     halfedge_descriptor te = opposite(ut, pm);
     for(int step = 0; step < k; ++step) te = ccw_in_fan(te);
-    if(concave && is_split(last) ? !is_cut(te) : !gap(counts_left ? te : opposite(te, pm)))
+    // at a concave corner the split of t hands its extra quad to e even when e is inside: an interior e of
+    // valence 3 becomes regular with t (the two defects cancel); any other interior e would become singular
+    const bool cancels_inside = concave && is_split(last) && !is_cut(te) && is_usable(target(te, pm)) &&
+                                valence(target(te, pm), pm) == 3;
+    if(concave && is_split(last) ? !is_cut(te) && !cancels_inside : !gap(counts_left ? te : opposite(te, pm)))
       return Plan_status::ENDPOINT_ADJUSTMENT;
     path.push_back(target(te, pm));
     ops[n - 1] = is_collapse(last) ? rotate(last, 2) : last;
