@@ -120,22 +120,35 @@ void test_subdivision_sphere()
   assert(sorted_points(sm) == sorted_points(ph));
 }
 
-// the context's closest singularities of v (closed mesh) are the closest ones by a plain breadth-first search
-template <typename PolygonMesh, typename Context>
-void check_nearest_singularities(const PolygonMesh& pm, typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
-                                 const Context& ctx)
+// a plain breadth-first search from v (a vertex of a closed mesh): the distance of every vertex (in `dist`),
+// and the distances of the singular vertices other than v, x1 and x2 in the order the search meets them
+template <typename PolygonMesh>
+std::vector<int> singular_distances_from(const PolygonMesh& pm, typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                                         typename boost::graph_traits<PolygonMesh>::vertex_descriptor x1,
+                                         typename boost::graph_traits<PolygonMesh>::vertex_descriptor x2,
+                                         std::map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, int>& dist)
 {
-  std::map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, int> dist;
   std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> queue(1, v);
   dist[v] = 0;
   std::vector<int> singular_distances;
   for(std::size_t i = 0; i < queue.size(); ++i)
   {
     const auto u = queue[i];
-    if(u != v && degree(u, pm) != 4) singular_distances.push_back(dist[u]);
+    if(u != v && u != x1 && u != x2 && degree(u, pm) != 4) singular_distances.push_back(dist[u]);
     for(auto h : CGAL::halfedges_around_target(halfedge(u, pm), pm))
       if(dist.emplace(source(h, pm), dist[u] + 1).second) queue.push_back(source(h, pm));
   }
+  return singular_distances;
+}
+
+// the context's closest singularities of v (closed mesh) are the closest ones by a plain breadth-first search
+template <typename PolygonMesh, typename Context>
+void check_nearest_singularities(const PolygonMesh& pm, typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                                 const Context& ctx)
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  std::map<typename GT::vertex_descriptor, int> dist;
+  const std::vector<int> singular_distances = singular_distances_from(pm, v, GT::null_vertex(), GT::null_vertex(), dist);
   const auto nb = ctx.nearest_singularities(v);
   assert(nb.size > 0 && nb.feature_distance == std::numeric_limits<int>::max());
   std::size_t k = 0;
@@ -473,16 +486,7 @@ void check_kept_nearest_singularities(const PolygonMesh& pm, const Context& ctx,
                                       typename boost::graph_traits<PolygonMesh>::vertex_descriptor x2, std::size_t n)
 {
   std::map<typename boost::graph_traits<PolygonMesh>::vertex_descriptor, int> dist;
-  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> queue(1, v);
-  dist[v] = 0;
-  std::vector<int> singular_distances;
-  for(std::size_t i = 0; i < queue.size(); ++i)
-  {
-    const auto u = queue[i];
-    if(u != v && u != x1 && u != x2 && degree(u, pm) != 4) singular_distances.push_back(dist[u]);
-    for(auto h : CGAL::halfedges_around_target(halfedge(u, pm), pm))
-      if(dist.emplace(source(h, pm), dist[u] + 1).second) queue.push_back(source(h, pm));
-  }
+  const std::vector<int> singular_distances = singular_distances_from(pm, v, x1, x2, dist);
   const auto part = ctx.nearest_singularities(v, x1, x2, n);
   assert(part.size == (std::min)(n, singular_distances.size()));
   for(std::size_t k = 0; k < part.size; ++k)
