@@ -76,7 +76,7 @@ static void summary(std::ostream& os, const char* title, const Q::Mesh_report& r
      << r.number_of_boundary_positive_defects << " positive boundary/feature = "
      << (r.number_of_interior_valence_3_like + r.number_of_interior_valence_5_like +
          r.number_of_boundary_negative_defects + r.number_of_boundary_positive_defects)
-     << " (lower bound ";
+     << " (" << r.number_of_singularities_by_sector << " counting feature vertices by sector; lower bound ";
   if(r.has_singularity_lower_bound) os << r.singularity_lower_bound; else os << "n/a";
   os << "); scaled Jacobian min " << std::setprecision(4) << r.min_scaled_jacobian << " mean "
      << r.mean_scaled_jacobian << ", " << r.number_of_inverted_quads << " inverted\n";

@@ -395,6 +395,15 @@ void test_constrained_edges()
     assert(nonzero > 0); // the halves do have boundary defects
     assert(Q::vertex_defect(vl[bent.id(3, 2)], lower) == 1 && Q::vertex_defect(vu[bent.id(3, 2)], upper) == -1);
     assert(Q::vertex_defect(vw[bent.id(3, 2)], whole, CGAL::parameters::edge_is_constrained_map(ecm)) == 0);
+    // each sector of a vertex of the whole is its fan in one half (and the vertices off the line are regular):
+    // counted by sector, the singularities of the whole are those of the two halves, (3,2) twice although its
+    // defect is 0
+    const Q::Mesh_report whole_report = Q::compute_mesh_report(whole, CGAL::parameters::edge_is_constrained_map(ecm));
+    const Q::Mesh_report lower_report = Q::compute_mesh_report(lower), upper_report = Q::compute_mesh_report(upper);
+    assert(whole_report.number_of_singularities_by_sector ==
+           lower_report.number_of_singularities() + upper_report.number_of_singularities());
+    assert(whole_report.number_of_singularities_by_sector >= whole_report.number_of_singularities() + 2);
+    assert(lower_report.number_of_singularities_by_sector == lower_report.number_of_singularities());
   }
 
   // a regular interior vertex whose constrained edges make a sharp 40 degree turn: the 40 degree sector
@@ -569,6 +578,8 @@ void check_real_mesh(const std::string& path, const Expected& e)
   assert(ok);
   assert(CGAL::is_valid_polygon_mesh(m));
   const Q::Mesh_report r = Q::compute_mesh_report(m);
+  // without constrained edges a border vertex has one sector (canonical triangles' tips aside)
+  assert(r.number_of_canonical_triangles != 0 || r.number_of_singularities_by_sector == r.number_of_singularities());
 
   assert(r.number_of_vertices == e.V);
   assert(r.number_of_faces == e.F);

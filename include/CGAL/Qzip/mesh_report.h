@@ -92,6 +92,13 @@ struct Mesh_report
   long interior_defect_sum = 0;                     ///< sum of the defects of the interior vertices
   long boundary_defect_sum = 0;                     ///< sum of the defects of the border vertices
   std::size_t total_absolute_defect = 0;            ///< sum of `|defect|` over all vertices
+  /// the singularities counted by sector: each interior vertex away from features with a non-zero defect
+  /// once, and each sector of a border or feature vertex (the faces between two consecutive border or
+  /// constrained edges around it) whose number of faces is not its ideal one (see `vertex_defect()`) once.
+  /// The fields above judge a vertex by its defect, the sum over its sectors: a feature vertex with one quad
+  /// too many in one sector and one too few in another counts as regular there, and twice here. Without
+  /// constrained edges it equals `number_of_singularities()` (a border vertex has one sector).
+  std::size_t number_of_singularities_by_sector = 0;
   /// `true` for a closed pure-quad mesh, the only case where `singularity_lower_bound` is defined.
   bool has_singularity_lower_bound = false;
   /// `|4 chi|` when `has_singularity_lower_bound`, 0 otherwise. On a closed quad mesh `2E = 4F`, so the sum of
@@ -254,6 +261,8 @@ Mesh_report compute_mesh_report(const PolygonMesh& pm,
       internal::Vertex_defect_info info = internal::vertex_defect_info(v, pm, vpm, ecm, gt);
       info.defect -= get(tip_of, v);
       r.total_absolute_defect += static_cast<std::size_t>(std::abs(info.defect));
+      r.number_of_singularities_by_sector += info.cut ? static_cast<std::size_t>(info.irregular_sectors)
+                                                      : (info.defect != 0 ? 1 : 0);
       if(info.on_border)
       {
         ++r.boundary_valence_histogram[info.valence];
@@ -338,6 +347,7 @@ inline std::ostream& write_json(std::ostream& os, const Mesh_report& r)
     << "  \"interior_defect_sum\": " << r.interior_defect_sum << ",\n"
     << "  \"boundary_defect_sum\": " << r.boundary_defect_sum << ",\n"
     << "  \"total_absolute_defect\": " << r.total_absolute_defect << ",\n"
+    << "  \"number_of_singularities_by_sector\": " << r.number_of_singularities_by_sector << ",\n"
     << "  \"singularity_lower_bound\": ";
   if(r.has_singularity_lower_bound)
     s << r.singularity_lower_bound;
@@ -382,7 +392,8 @@ inline std::ostream& write_text(std::ostream& os, const Mesh_report& r)
   s << "\nsingularities: interior " << r.number_of_interior_valence_3_like << " v3-like, "
     << r.number_of_interior_valence_5_like << " v5-like; boundary "
     << r.number_of_boundary_negative_defects << " negative, " << r.number_of_boundary_positive_defects
-    << " positive; total |defect| " << r.total_absolute_defect << "; lower bound ";
+    << " positive; " << r.number_of_singularities_by_sector << " counted by sector; total |defect| "
+    << r.total_absolute_defect << "; lower bound ";
   if(r.has_singularity_lower_bound)
     s << r.singularity_lower_bound;
   else

@@ -33,6 +33,8 @@ struct Vertex_defect_info
   int defect = 0;
   int faces = 0;          // faces around the vertex (the valence for an interior vertex away from features)
   int expected_faces = 4; // what a regular vertex has there: 4 inside, the sum of the sectors' ideals on a cut
+  bool cut = false;          // whether border or constrained edges cut the fan into sectors
+  int irregular_sectors = 0; // on a cut: the sectors whose number of faces is not their ideal one
 };
 
 // Angle (radians, in [0, pi]) at `target(h, pm)` between the two edges of `face(h, pm)` incident to it,
@@ -101,6 +103,7 @@ vertex_defect_info(typename boost::graph_traits<PolygonMesh>::vertex_descriptor 
   }
 
   // Walk the fan from a cut edge; border and constrained edges cut it into sectors.
+  info.cut = true;
   double theta = 0;
   int q = 0;
   info.expected_faces = 0;
@@ -113,8 +116,10 @@ vertex_defect_info(typename boost::graph_traits<PolygonMesh>::vertex_descriptor 
     }
     if(is_cut(next(h, pm)) && q > 0) // the sector ends at edge(next(h)); the walk ends at edge(start)
     {
+      const int ideal = ideal_number_of_faces(theta);
       info.faces += q;
-      info.expected_faces += ideal_number_of_faces(theta);
+      info.expected_faces += ideal;
+      if(q != ideal) ++info.irregular_sectors;
       theta = 0;
       q = 0;
     }
