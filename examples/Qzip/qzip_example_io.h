@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <new>
@@ -32,6 +33,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <sys/stat.h>
@@ -53,12 +55,83 @@ inline bool same_file(const std::string& a, const std::string& b)
 
 /// Checks the header of an OFF or PLY file before CGAL's readers see it: the element counts it declares must
 /// fit in the file (every element takes at least one byte); in a PLY header every `property` line must
-/// follow an `element` line, element counts must be non-negative integers, and vertex coordinates and normals
-/// must be `float` or `double` (not lists). CGAL 5.5's readers reserve memory for the declared counts before reading, which
+/// follow an `element` line, element counts must be non-negative integers, vertex coordinates and normals
+/// must be `float` or `double` (not lists), the header must end with `end_header`, and no list of the data
+/// may declare more items than the file can hold (see `ply_lists_fit()`). CGAL 5.5's readers reserve memory for the declared counts before reading, which
 /// fails (`std::bad_alloc`, or an abort under AddressSanitizer) on absurd counts, and its PLY reader
 /// dereferences the last element of an empty list on a property without element, and a null pointer on
 /// integer or list coordinates (segmentation faults in Release; assertions otherwise).
 /// Other formats and binary OFF are not checked.
+/// The declarations of a PLY header that the data must follow: the elements, their counts and properties.
+struct Ply_element
+{
+  std::string name;
+  double count = 0;
+  std::vector<std::pair<std::string, std::string> > properties; // (count type, item type); count type empty for a scalar
+};
+
+/// The size in bytes of a PLY scalar type, 0 for an unknown one.
+inline std::size_t ply_type_size(const std::string& type)
+{
+  if(type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if(type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if(type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" || type == "float32") return 4;
+  if(type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+/// Reads a PLY list count of type `type` from binary data (`big_endian` or little endian); -1 if it cannot.
+inline double read_binary_ply_count(std::istream& in, const std::string& type, bool big_endian)
+{
+  const std::size_t size = ply_type_size(type);
+  unsigned char bytes[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+  if(size == 0 || size > 4 || !in.read(reinterpret_cast<char*>(bytes), std::streamsize(size))) return -1;
+  std::uint32_t u = 0;
+  for(std::size_t i = 0; i < size; ++i) u |= std::uint32_t(bytes[big_endian ? size - 1 - i : i]) << (8 * i);
+  const bool is_signed = type == "char" || type == "short" || type == "int" || type == "int8" || type == "int16" || type == "int32";
+  if(is_signed && (u >> (8 * size - 1)) != 0) return -1; // negative
+  return double(u);
+}
+
+/// Checks that every list of the data of a PLY file (`in` positioned after its header) declares no more
+/// items than the file can hold: CGAL 5.5's reader resizes a vector to the declared count before reading
+/// the items (a list count of 4 billion in a file of a few hundred bytes allocates 16 GB). Stops quietly,
+/// leaving the rest to the reader, at the end of the data or at a type it does not know.
+inline bool ply_lists_fit(std::istream& in, const std::string& format, const std::vector<Ply_element>& elements,
+                          std::uintmax_t file_size, const std::string& path, std::string& error)
+{
+  const bool ascii = format == "ascii", big_endian = format == "binary_big_endian";
+  if(!ascii && !big_endian && format != "binary_little_endian") return true;
+  for(const Ply_element& element : elements)
+    for(double row = 0; row < element.count; ++row)
+      for(const std::pair<std::string, std::string>& property : element.properties)
+      {
+        const std::size_t item_size = ply_type_size(property.second);
+        if(item_size == 0) return true;
+        double items = 1;
+        if(!property.first.empty())
+        {
+          std::string token;
+          if(ascii) { if(!(in >> token)) return true; }
+          items = ascii ? std::strtod(token.c_str(), nullptr) : read_binary_ply_count(in, property.first, big_endian);
+          if(!(items >= 0) || items > double(file_size))
+          {
+            error = "cannot read '" + path + "': a list of element '" + element.name
+                    + "' declares more items than the file can hold";
+            return false;
+          }
+        }
+        if(ascii)
+        {
+          std::string token;
+          for(double k = 0; k < items; ++k) if(!(in >> token)) return true;
+        }
+        else if(!in.seekg(std::streamoff(items * double(item_size)), std::ios::cur) || in.peek() == EOF)
+          return true;
+      }
+  return true;
+}
+
 inline bool check_file_header(const std::string& path, std::uintmax_t file_size, std::string& error)
 {
   std::ifstream in(path, std::ios::binary);
@@ -75,21 +148,26 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
   if(token == "ply")
   {
     double total = 0;
-    bool element_seen = false;
-    std::string element, type;
+    bool element_seen = false, header_ended = false;
+    std::string element, type, format;
+    std::vector<Ply_element> elements;
     while(std::getline(in, line))
     {
       std::istringstream is(line);
       std::string keyword, name;
       double count = 0;
       if(!(is >> keyword)) continue;
-      if(keyword == "end_header") break;
+      if(keyword == "end_header") { header_ended = true; break; }
+      if(keyword == "format") is >> format;
       if(keyword == "element")
       {
         element_seen = true;
         element.clear();
+        elements.emplace_back();
         if(is >> element >> count)
         {
+          elements.back().name = element;
+          elements.back().count = count;
           // CGAL 5.5's reader turns a negative count into a huge unsigned one and loops over it
           if(count < 0 || count != std::floor(count))
           {
@@ -105,12 +183,15 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
         error = "cannot read '" + path + "': malformed PLY header (a property before any element)";
         return false;
       }
-      else if(keyword == "property" && element == "vertex" && (is >> type))
+      else if(keyword == "property" && (is >> type))
       {
         // `property <type> <name>` or `property list <count type> <item type> <name>`
         const bool list = type == "list";
-        if(list) is >> type >> type;
+        std::string count_type;
+        if(list) is >> count_type >> type;
         is >> name;
+        elements.back().properties.emplace_back(count_type, type);
+        if(element != "vertex") continue;
         if((name == "x" || name == "y" || name == "z" || name == "nx" || name == "ny" || name == "nz") &&
            (list || (type != "float" && type != "float32" && type != "double" && type != "float64")))
         {
@@ -120,7 +201,12 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
         }
       }
     }
-    return !too_many(total);
+    if(!header_ended)
+    {
+      error = "cannot read '" + path + "': malformed PLY header (no end_header line)";
+      return false;
+    }
+    return !too_many(total) && ply_lists_fit(in, format, elements, file_size, path, error);
   }
   if(token.size() < 3 || token.compare(token.size() - 3, 3, "OFF") != 0) return true;
   std::string rest;
