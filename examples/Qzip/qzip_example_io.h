@@ -107,7 +107,6 @@ inline bool ply_lists_fit(std::istream& in, const std::string& format, const std
       for(const std::pair<std::string, std::string>& property : element.properties)
       {
         const std::size_t item_size = ply_type_size(property.second);
-        if(item_size == 0) return true;
         double items = 1;
         if(!property.first.empty())
         {
@@ -149,6 +148,7 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
   {
     double total = 0;
     bool element_seen = false, header_ended = false;
+    int line_number = 0; // after the first
     std::string element, type, format;
     std::vector<Ply_element> elements;
     while(std::getline(in, line))
@@ -158,7 +158,7 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
       double count = 0;
       if(!(is >> keyword)) continue;
       if(keyword == "end_header") { header_ended = true; break; }
-      if(keyword == "format") is >> format;
+      if(++line_number == 1) is >> format; // CGAL's reader takes the format from the second line, whatever its keyword
       if(keyword == "element")
       {
         element_seen = true;
@@ -190,7 +190,10 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
         std::string count_type;
         if(list) is >> count_type >> type;
         is >> name;
-        elements.back().properties.emplace_back(count_type, type);
+        // the reader skips properties of unknown types (and lists with a floating-point count)
+        if(ply_type_size(type) != 0 && (!list || (ply_type_size(count_type) != 0 && ply_type_size(count_type) <= 4 &&
+                                                  count_type.find("float") == std::string::npos)))
+          elements.back().properties.emplace_back(count_type, type);
         if(element != "vertex") continue;
         if((name == "x" || name == "y" || name == "z" || name == "nx" || name == "ny" || name == "nz") &&
            (list || (type != "float" && type != "float32" && type != "double" && type != "float64")))
