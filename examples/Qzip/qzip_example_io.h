@@ -53,15 +53,6 @@ inline bool same_file(const std::string& a, const std::string& b)
   return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
-/// Checks the header of an OFF or PLY file before CGAL's readers see it: the element counts it declares must
-/// fit in the file (every element takes at least one byte); in a PLY header every `property` line must
-/// follow an `element` line, element counts must be non-negative integers, vertex coordinates and normals
-/// must be `float` or `double` (not lists), the header must end with `end_header`, and no list of the data
-/// may declare more items than the file can hold (see `ply_lists_fit()`). CGAL 5.5's readers reserve memory for the declared counts before reading, which
-/// fails (`std::bad_alloc`, or an abort under AddressSanitizer) on absurd counts, and its PLY reader
-/// dereferences the last element of an empty list on a property without element, and a null pointer on
-/// integer or list coordinates (segmentation faults in Release; assertions otherwise).
-/// Other formats and binary OFF are not checked.
 /// The declarations of a PLY header that the data must follow: the elements, their counts and properties.
 struct Ply_element
 {
@@ -93,44 +84,59 @@ inline double read_binary_ply_count(std::istream& in, const std::string& type, b
   return double(u);
 }
 
-/// Checks that every list of the data of a PLY file (`in` positioned after its header) declares no more
-/// items than the file can hold: CGAL 5.5's reader resizes a vector to the declared count before reading
-/// the items (a list count of 4 billion in a file of a few hundred bytes allocates 16 GB). Stops quietly,
-/// leaving the rest to the reader, at the end of the data or at a type it does not know.
+/// Checks that the data of a PLY file (`in` positioned after its header) holds every element its header
+/// declares, and that no list declares more items than the file can hold: CGAL 5.5's reader resizes a vector
+/// to the declared count before reading the items (a list count of 4 billion in a file of a few hundred bytes
+/// allocates 16 GB). A file whose data ends early is refused too: the reader would fail on it, and where its
+/// reading of a garbled header differs from this one, the data it reads is not the data checked here.
 inline bool ply_lists_fit(std::istream& in, const std::string& format, const std::vector<Ply_element>& elements,
                           std::uintmax_t file_size, const std::string& path, std::string& error)
 {
   const bool ascii = format == "ascii", big_endian = format == "binary_big_endian";
   if(!ascii && !big_endian && format != "binary_little_endian") return true;
+  auto refuse = [&](const std::string& why)
+  {
+    error = "cannot read '" + path + "': " + why;
+    return false;
+  };
+  const std::string ends_early = "the PLY data ends before the elements its header declares";
   for(const Ply_element& element : elements)
     for(double row = 0; row < element.count; ++row)
       for(const std::pair<std::string, std::string>& property : element.properties)
       {
-        const std::size_t item_size = ply_type_size(property.second);
         double items = 1;
+        std::string token;
         if(!property.first.empty())
         {
-          std::string token;
-          if(ascii) { if(!(in >> token)) return true; }
+          if(ascii && !(in >> token)) return refuse(ends_early);
           items = ascii ? std::strtod(token.c_str(), nullptr) : read_binary_ply_count(in, property.first, big_endian);
+          if(!in) return refuse(ends_early);
           if(!(items >= 0) || items > double(file_size))
-          {
-            error = "cannot read '" + path + "': a list of element '" + element.name
-                    + "' declares more items than the file can hold";
-            return false;
-          }
+            return refuse("a list of element '" + element.name + "' declares more items than the file can hold");
         }
         if(ascii)
         {
-          std::string token;
-          for(double k = 0; k < items; ++k) if(!(in >> token)) return true;
+          for(double k = 0; k < items; ++k) if(!(in >> token)) return refuse(ends_early);
+          continue;
         }
-        else if(!in.seekg(std::streamoff(items * double(item_size)), std::ios::cur) || in.peek() == EOF)
-          return true;
+        const std::streamoff at = in.tellg();
+        const double bytes = items * double(ply_type_size(property.second));
+        if(at < 0 || double(at) + bytes > double(file_size)) return refuse(ends_early);
+        in.seekg(std::streamoff(bytes), std::ios::cur);
       }
   return true;
 }
 
+/// Checks the header of an OFF or PLY file before CGAL's readers see it: the element counts it declares must
+/// fit in the file (every element takes at least one byte); in a PLY header every `property` line must
+/// follow an `element` line, element counts must be non-negative integers, vertex coordinates and normals
+/// must be `float` or `double` (not lists), the header must end with `end_header`, and the data must hold
+/// the declared elements with no list longer than the file (see `ply_lists_fit()`). CGAL 5.5's readers
+/// reserve memory for the declared counts before reading, which
+/// fails (`std::bad_alloc`, or an abort under AddressSanitizer) on absurd counts, and its PLY reader
+/// dereferences the last element of an empty list on a property without element, and a null pointer on
+/// integer or list coordinates (segmentation faults in Release; assertions otherwise).
+/// Other formats and binary OFF are not checked.
 inline bool check_file_header(const std::string& path, std::uintmax_t file_size, std::string& error)
 {
   std::ifstream in(path, std::ios::binary);
