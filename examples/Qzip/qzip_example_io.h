@@ -25,7 +25,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <new>
@@ -100,23 +99,36 @@ inline bool ply_lists_fit(std::istream& in, const std::string& format, const std
     return false;
   };
   const std::string ends_early = "the PLY data ends before the elements its header declares";
+  // An ASCII value is read as the reader reads it (an integer type as an integer, `>>` stopping where the
+  // number does): after a value it cannot read, the reader's stream fails and it takes an uninitialized
+  // count for the next list.
+  auto read_ascii_value = [&](const std::string& type, double& value)
+  {
+    if(type.find("float") != std::string::npos || type == "double")
+      return bool(in >> value);
+    long long integer = 0;
+    if(!(in >> integer)) return false;
+    value = double(integer);
+    return true;
+  };
+  const std::string unreadable = "the PLY data has a value that is not a number of its type";
   for(const Ply_element& element : elements)
     for(double row = 0; row < element.count; ++row)
       for(const std::pair<std::string, std::string>& property : element.properties)
       {
-        double items = 1;
-        std::string token;
+        double items = 1, value = 0;
         if(!property.first.empty())
         {
-          if(ascii && !(in >> token)) return refuse(ends_early);
-          items = ascii ? std::strtod(token.c_str(), nullptr) : read_binary_ply_count(in, property.first, big_endian);
+          if(ascii && !read_ascii_value(property.first, items)) return refuse(in.eof() ? ends_early : unreadable);
+          if(!ascii) items = read_binary_ply_count(in, property.first, big_endian);
           if(!in) return refuse(ends_early);
           if(!(items >= 0) || items > double(file_size))
             return refuse("a list of element '" + element.name + "' declares more items than the file can hold");
         }
         if(ascii)
         {
-          for(double k = 0; k < items; ++k) if(!(in >> token)) return refuse(ends_early);
+          for(double k = 0; k < items; ++k)
+            if(!read_ascii_value(property.second, value)) return refuse(in.eof() ? ends_early : unreadable);
           continue;
         }
         const std::streamoff at = in.tellg();
