@@ -310,11 +310,7 @@ plan_qzip(const PolygonMesh& pm,
   plan.sketch = sketch;
   plan.initial_operation = initial_operation;
   if(!internal::is_simple_edge_path(sketch, pm)) { plan.status = Plan_status::INVALID_PATH; return plan; }
-  auto on_feature = [&](vertex_descriptor v)
-  {
-    for(auto h : halfedges_around_target(halfedge(v, pm), pm)) if(get(ecm, edge(h, pm))) return true;
-    return false;
-  };
+  auto on_feature = [&](vertex_descriptor v) { return internal::is_on_constrained_edge(v, pm, ecm); };
   auto on_cut = [&](vertex_descriptor v) { return internal::is_border_vertex(v, pm) || on_feature(v); };
   // a border (or feature) source: the chain starts inside, so this is the plan of the reversed sketch, and
   // `initial_operation` is the compass at its start, the interior singularity sketch.back()

@@ -294,12 +294,7 @@ private:
     return false;
   }
 
-  bool on_feature(vertex_descriptor v) const
-  {
-    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-      if(get(ecm, edge(h, pm))) return true;
-    return false;
-  }
+  bool on_feature(vertex_descriptor v) const { return is_on_constrained_edge(v, pm, ecm); }
 
   // Constrained edges stay whole, and feature curves keep their number of edges: a collapse may not remove
   // one (b-c, c-d) nor merge two vertices that are each on a feature or on the border (the constrained

@@ -37,6 +37,16 @@ struct Vertex_defect_info
   int irregular_sectors = 0; // on a cut: the sectors whose number of faces is not their ideal one
 };
 
+// Whether `v` is incident to a constrained edge (a feature vertex, or the end of a feature curve).
+template <typename PolygonMesh, typename EdgeIsConstrainedMap>
+bool is_on_constrained_edge(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v, const PolygonMesh& pm,
+                            const EdgeIsConstrainedMap& ecm)
+{
+  for(auto h : halfedges_around_target(halfedge(v, pm), pm))
+    if(get(ecm, edge(h, pm))) return true;
+  return false;
+}
+
 // Angle (radians, in [0, pi]) at `target(h, pm)` between the two edges of `face(h, pm)` incident to it,
 // i.e. between `h` (reversed) and `next(h, pm)`. A zero-length edge gives 0.
 template <typename PolygonMesh, typename VertexPointMap, typename GeomTraits>
