@@ -331,7 +331,6 @@ void test_planted_pairs(Counters& c, std::size_t& longest)
             check_done(w, before, r, c);
             if(c.located > located)
             {
-              // each singularity moved by one edge: it sits next to where it was
               // each singularity moved by one edge: it sits next to where it was (checked where no third
               // singularity is close enough to be confused with it)
               const int ds = distance_to_nearest(m, sing[i], get(CGAL::vertex_point, w, r.moved_source));
@@ -367,16 +366,12 @@ inline int winding_number(const std::vector<Point>& loop, const Point& p)
   return int(std::lround(total / (2 * CGAL_PI)));
 }
 
-/// random paths through waypoints between planted singularities, avoiding the other singularities;
-/// two paths whose loop winds around no other singularity are homotopic and must give isomorphic meshes.
+/// the grid of the homotopy tests: a planted chain of five collapses (two v3, two v5) and, to wind
+/// around, a second pair made by one split of a regular vertex between opposite edges
 template <typename Mesh>
-void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& distinct_classes_differing, Counters& c)
+void plant_winding_grid(Mesh& m)
 {
-  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-  CGAL::Random rng(seed);
-  Mesh m;
   plant_chain(m, 24, 11, 7, 5, true);
-  // a second pair of singularities to wind around: one split of a regular vertex between opposite edges
   for(auto v : vertices(m))
     if(get(CGAL::vertex_point, m, v) == Point(12, 17, 0))
     {
@@ -387,6 +382,17 @@ void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& dis
       put(get(CGAL::vertex_point, m), c, Point(12.4, 17.4, 0));
       break;
     }
+}
+
+/// random paths through waypoints between planted singularities, avoiding the other singularities;
+/// two paths whose loop winds around no other singularity are homotopic and must give isomorphic meshes.
+template <typename Mesh>
+void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& distinct_classes_differing, Counters& c)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  CGAL::Random rng(seed);
+  Mesh m;
+  plant_winding_grid(m);
   const auto sing = singular_vertices(m);
   std::vector<vertex_descriptor> inner;
   for(auto v : vertices(m)) if(!on_border(v, m) && valence(v, m) == 4) inner.push_back(v);
@@ -444,6 +450,129 @@ void test_homotopy(unsigned seed, std::size_t& homotopic_pairs, std::size_t& dis
           }
       }
     }
+}
+
+struct Spiral_counts
+{
+  std::size_t paths = 0;            // spiral paths made (one or more turns around another singularity)
+  std::size_t spirals_done = 0;     // done Q-zips along them
+  std::size_t homotopic_spirals = 0; // pairs of different spirals, homotopic, done on both: isomorphic
+  std::size_t turns_differing = 0;  // pairs whose loop winds around a singularity and whose meshes differ
+};
+
+/// Spiral paths: from s, a path that winds one to two and a half times around another singularity u before
+/// it goes to t (waypoints on a square spiral around u, joined by shortest paths that avoid the path so far and the
+/// other singularities), all leaving s along the same edge; every motion on each.
+/// Each done Q-zip keeps the invariants (check_done()) and is undone exactly by the history. Two spirals whose loop winds around no other
+/// singularity (the same number of turns around u) give isomorphic meshes.
+template <typename Mesh>
+void test_spiral_paths(unsigned seed, Spiral_counts& sc, Counters& c)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  CGAL::Random rng(seed);
+  Mesh m;
+  plant_winding_grid(m);
+  const auto sing = singular_vertices(m);
+  const auto position = [&m](vertex_descriptor v) { return get(CGAL::vertex_point, m, v); };
+  std::vector<vertex_descriptor> inner;
+  for(auto v : vertices(m)) if(!on_border(v, m) && valence(v, m) == 4) inner.push_back(v);
+  const auto closest_inner = [&](const Point& p)
+  {
+    return *std::min_element(inner.begin(), inner.end(), [&](vertex_descriptor a, vertex_descriptor b)
+                             { return CGAL::squared_distance(position(a), p) < CGAL::squared_distance(position(b), p); });
+  };
+  // the winding number around o of the loop made by path a and path b reversed
+  const auto loop_winding = [&](const std::vector<vertex_descriptor>& a, const std::vector<vertex_descriptor>& b,
+                                vertex_descriptor o)
+  {
+    std::vector<Point> loop;
+    for(auto v : a) loop.push_back(position(v));
+    for(std::size_t x = b.size() - 1; x-- > 1;) loop.push_back(position(b[x]));
+    return winding_number(loop, position(o));
+  };
+  for(vertex_descriptor s : sing)
+    for(vertex_descriptor t : sing)
+      for(vertex_descriptor u : sing)
+      {
+        if(s == t || u == s || u == t) continue;
+        std::set<vertex_descriptor> others;
+        for(auto x : sing) if(x != s && x != t) others.insert(x);
+        vertex_descriptor first = boost::graph_traits<Mesh>::null_vertex();
+        for(auto h : CGAL::halfedges_around_target(halfedge(s, m), m))
+          if(!on_border(source(h, m), m) && valence(source(h, m), m) == 4) { first = source(h, m); break; }
+        if(first == boost::graph_traits<Mesh>::null_vertex()) continue;
+        // extends `path` by a shortest path to `to` that avoids the other singularities and keeps one edge
+        // away from the path so far (not from its last two vertices): the turns of a spiral have quads
+        // between them for the strip operations
+        const auto extend = [&](std::vector<vertex_descriptor>& path, vertex_descriptor to)
+        {
+          if(to == path.back()) return true;
+          std::set<vertex_descriptor> forbidden = others;
+          forbidden.insert(path.begin(), path.end() - 1);
+          for(std::size_t x = 0; x + 2 < path.size(); ++x)
+            for(auto h : CGAL::halfedges_around_target(halfedge(path[x], m), m)) forbidden.insert(source(h, m));
+          forbidden.erase(path.back());
+          if(to == t) forbidden.erase(t); else forbidden.insert(t);
+          const auto piece = bfs_path(m, path.back(), to, forbidden);
+          path.insert(path.end(), piece.empty() ? piece.end() : piece.begin() + 1, piece.end());
+          return !piece.empty();
+        };
+        std::vector<std::vector<vertex_descriptor> > paths(1, std::vector<vertex_descriptor>{ s, first });
+        if(!extend(paths[0], t)) continue;
+        for(int attempt = 0; attempt < 5; ++attempt)
+        {
+          const int quarters = rng.get_int(4, 11), turn = rng.get_bool() ? 1 : -1;
+          const double r0 = rng.get_int(2, 4), q0 = rng.get_int(0, 4);
+          std::vector<vertex_descriptor> path{ s, first };
+          bool ok = true;
+          for(int q = 0; ok && q <= quarters; ++q)
+          {
+            const double angle = (q0 + turn * q) * CGAL_PI / 2, r = r0 + 0.75 * q;
+            const vertex_descriptor w = closest_inner(Point(position(u).x() + r * std::cos(angle),
+                                                            position(u).y() + r * std::sin(angle), 0));
+            ok = w != t && (w == path.back() || std::find(path.begin(), path.end(), w) == path.end()) && extend(path, w);
+          }
+          if(ok && extend(path, t) && loop_winding(path, paths[0], u) != 0) paths.push_back(path);
+        }
+        sc.paths += paths.size() - 1;
+        for(int mo = 0; mo < 4; ++mo)
+        {
+          std::vector<Mesh> results(paths.size());
+          std::vector<bool> done(paths.size(), false);
+          for(std::size_t a = 1; a < paths.size(); ++a)
+          {
+            Mesh& w = results[a];
+            auto v2v = copy_mesh_with_map(m, w);
+            std::vector<vertex_descriptor> path;
+            for(auto v : paths[a]) path.push_back(v2v[v]);
+            const Snapshot<Mesh> before(w);
+            const auto plan = Q::plan_qzip(w, path, Q::Strip_operation(mo));
+            check_predicted_failure(c, w, plan);
+            if(!plan.is_realizable()) { ++c.refused; continue; }
+            Q::Qzip_history<Mesh> history(w);
+            const auto r = Q::execute_qzip(w, plan, history);
+            if(!r.is_done()) { ++c.rolled_back; continue; }
+            check_done(w, before, r, c);
+            Mesh kept;
+            copy_mesh(w, kept);
+            Q::undo_qzip(history);
+            assert(CGAL::is_valid_polygon_mesh(w) && are_isomorphic(w, m) && sorted_points(w) == sorted_points(m));
+            copy_mesh(kept, w);
+            done[a] = true;
+            ++sc.spirals_done;
+          }
+          for(std::size_t a = 1; a < paths.size(); ++a)
+            for(std::size_t b = a + 1; b < paths.size(); ++b)
+            {
+              if(!done[a] || !done[b]) continue;
+              bool homotopic = true;
+              for(auto o : others) homotopic = homotopic && loop_winding(paths[a], paths[b], o) == 0;
+              const bool isomorphic = are_isomorphic(results[a], results[b]);
+              if(homotopic) { assert(isomorphic); ++sc.homotopic_spirals; }
+              else if(!isomorphic) ++sc.turns_differing;
+            }
+        }
+      }
 }
 
 /// Homotopy invariance on a real mesh (compare_homotopic_paths() in qzip_test_utils.h): random pairs of
@@ -1186,6 +1315,18 @@ int main(int argc, char** argv)
   // a first split without guide (SPLIT_WITHOUT_GUIDE); the 5 plans whose simulation failed arrived at a v5 by a
   // U-turn and lost t, and are realizable since the end rule straightens that arrival
   assert(homotopy.rolled_back == 0 && homotopy.predicted_failures >= 1);
+
+  Spiral_counts spirals;
+  Counters spiral_plans;
+  test_spiral_paths<Surface_mesh>(5, spirals, spiral_plans);
+  test_spiral_paths<Polyhedron>(6, spirals, spiral_plans);
+  std::cout << "  spiral paths: " << spirals.paths << " paths winding one to two and a half times around another singularity, "
+            << spirals.spirals_done << " Q-zips done along them (each checked and undone), " << spirals.homotopic_spirals
+            << " pairs of homotopic spirals isomorphic, " << spirals.turns_differing
+            << " pairs with different turns giving different meshes" << std::endl;
+  spiral_plans.print("spiral paths");
+  assert(spirals.spirals_done > 100 && spirals.homotopic_spirals > 20 && spirals.turns_differing > 0);
+  assert(spiral_plans.rolled_back == 0);
 
   Homotopy_counts homotopy_real;
   Counters homotopy_real_plans;
