@@ -644,7 +644,10 @@ std::size_t sector_check_refusals()
         const auto done = Q::execute_qzip(moved, plan_on_copy(moved, fmoved, sketch_points, Q::Strip_operation(motion)),
                                           CGAL::parameters::edge_is_constrained_map(fmoved));
         assert(done.is_done() && done.reverse_status != Q::Reverse_qzip_status::SINGULARITIES_CANCELLED);
-        for(vertex_descriptor v : done.touched_vertices) assert(!on_border(v, moved));
+        // besides t and e, it touched interior vertices off the features only, which the executor judges by their
+        // valences, the same on both grids
+        for(vertex_descriptor v : done.touched_vertices)
+          assert(!on_border(v, moved) && (!on_feature(v, moved, fmoved) || position(v, moved) == t_at || position(v, moved) == apex));
         const auto at_moved = vertices_by_position(moved);
         assert(Q::vertex_defect(at_moved.at(t_at), moved, CGAL::parameters::edge_is_constrained_map(fmoved)) == 0);
         // the sectors of e after the surgery, with the numbers of quads they should have on the folded grid
@@ -658,7 +661,7 @@ std::size_t sector_check_refusals()
           e_total_after += defect;
           e_defects_after.insert(defect);
         }
-        assert(e_total_after == 0); // t and e regular as totals: the check of the vertices' defects accepts
+        assert(e_total_after == 0); // t and e regular as totals: the check of the vertices' codes accepts
         assert(e_defects_after == std::multiset<int>({ -1, 1 })); // a -1 below e, new: the sector check refuses
 
         std::vector<Point> folded_sketch;
