@@ -139,7 +139,12 @@ class Feature_invariants
   std::map<Sector_key, int> expected;
   std::vector<int> codes;
 
-  // calls f(key, faces, angle) for every sector of the cut vertex v
+  static bool is_cut_vertex(vertex_descriptor v, const Mesh& m, const Feature_map& fm)
+  { return on_border(v, m) || on_feature(v, m, fm); }
+
+public:
+  /// calls f(key, faces, angle) for every sector of the cut vertex v, named by the positions of v and of the
+  /// far ends of its two bounding edges
   template <typename F>
   static void for_each_sector(vertex_descriptor v, const Mesh& m, const Feature_map& fm, F f)
   {
@@ -166,10 +171,6 @@ class Feature_invariants
     }
   }
 
-  static bool is_cut_vertex(vertex_descriptor v, const Mesh& m, const Feature_map& fm)
-  { return on_border(v, m) || on_feature(v, m, fm); }
-
-public:
   Feature_invariants(const Mesh& m, const Feature_map& fm)
     : chi(euler_characteristic(m)), faces(CGAL::faces(m).size()), segments(feature_segments(m, fm))
   {
@@ -554,6 +555,213 @@ inline void test_feature_end_sketch_orientation()
   assert(realizable > 0 && along > 0);
 }
 
+/// `p` once the plane is folded at `apex`: around `apex`, the polar angles (from the direction +x) of the upper
+/// half-plane, (0, pi), are squeezed into (pi - upper, pi) and those of the lower one, (pi, 2 pi), stretched over
+/// (pi, 3 pi - upper). The ray towards -x stays in place (exactly), the ray towards +x turns to the angle pi - upper,
+/// and no face turns over: a feature line along y = apex.y turns sharply at `apex`, whose faces above it then span
+/// the angle `upper` and those below 2 pi - upper.
+inline Point folded_at(const Point& p, const Point& apex, double upper)
+{
+  const double dx = p.x() - apex.x(), dy = p.y() - apex.y();
+  if(dy == 0 && dx <= 0) return p;
+  const double phi = dy < 0 ? std::atan2(dy, dx) + 2 * CGAL_PI : std::atan2(dy, dx);
+  const double image = phi <= CGAL_PI ? CGAL_PI - upper + phi * upper / CGAL_PI
+                                      : CGAL_PI + (phi - CGAL_PI) * (2 * CGAL_PI - upper) / CGAL_PI;
+  const double r = std::sqrt(dx * dx + dy * dy);
+  return Point(apex.x() + r * std::cos(image), apex.y() + r * std::sin(image), p.z());
+}
+
+/// the sectors of the feature vertex `v` (Feature_invariants::for_each_sector()), each with its number of faces and
+/// the number of quads it should have, named by positions mapped by `rename`
+template <typename Mesh, typename Rename>
+std::map<std::tuple<Point, Point, Point>, std::pair<int, int> >
+sectors_of(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& m, const Feature_map<Mesh>& fm, Rename rename)
+{
+  std::map<std::tuple<Point, Point, Point>, std::pair<int, int> > out;
+  Feature_invariants<Mesh>::for_each_sector(v, m, fm, [&](const std::tuple<Point, Point, Point>& k, int q, double theta)
+  {
+    out[std::make_tuple(rename(std::get<0>(k)), rename(std::get<1>(k)), rename(std::get<2>(k)))] =
+      std::make_pair(q, CGAL::Qzip::internal::ideal_number_of_faces(theta));
+  });
+  return out;
+}
+
+/// The executor's sector check deciding (manual, "Feature End Points"): the grid of test_feature_end_moves() with a
+/// +1 planted below the straight feature line at t = (5, 6), then folded at its neighbour e = (6, 6) on the line
+/// (folded_at(), 45 degrees above the line): e keeps its two faces on each side, but should have one above (+1) and
+/// four below (-2), a defect -1 in all. A Q-zip that moves the +1 of t into e (a move on the flat grid, where it is
+/// done) gives e a third face below: as totals, t and e become regular (+1 and -1 cancel, which the check of the
+/// vertices' defects accepts), but sector by sector the -2 below e becomes a -1, a singularity that was not there
+/// (the sector check refuses what is not a sub-multiset, as it refuses a quad traded between two sectors). For each
+/// such surgery, found on the flat grid: the plan on the folded grid is refused by its simulation
+/// (`EXECUTION_WOULD_FAIL`, `SINGULARITY_CREATED`); planned without simulation it is the same surgery, whose
+/// execution is rolled back (`SINGULARITY_CREATED`) leaving the mesh as it was, positions and features included;
+/// the sector counts after it are measured on the flat grid, where it is done (same connectivity, only the numbers
+/// of quads e should have differ). Returns the number of such surgeries.
+template <typename Mesh>
+std::size_t sector_check_refusals()
+{
+  namespace Q = CGAL::Qzip;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  const Point apex(6, 6, 0), t_at(5, 6, 0);
+  const auto fold = [&apex](const Point& p) { return folded_at(p, apex, CGAL_PI / 4); };
+  Mesh flat;
+  const Feature_segments flat_segments = make_grid_with_feature(flat, 16, 12, { { { 0, 6 } }, { { 16, 6 } } }, { { { 5, 1, 5, 6, 1 } } });
+  const Feature_map<Mesh> fflat = mark_features(flat, flat_segments);
+  const auto np_flat = CGAL::parameters::edge_is_constrained_map(fflat);
+  Mesh folded;
+  copy_mesh(flat, folded);
+  for(vertex_descriptor v : vertices(folded)) put(get(CGAL::vertex_point, folded), v, fold(position(v, folded)));
+  Feature_segments segments;
+  for(const auto& sg : flat_segments) segments.insert(segment_key(fold(sg.first), fold(sg.second)));
+  const Feature_map<Mesh> ffolded = mark_features(folded, segments);
+  const auto np_folded = CGAL::parameters::edge_is_constrained_map(ffolded);
+
+  const vertex_descriptor t = vertices_by_position(folded).at(t_at), e = vertices_by_position(folded).at(apex);
+  const vertex_descriptor flat_t = vertices_by_position(flat).at(t_at);
+  assert(Q::vertex_defect(flat_t, flat, np_flat) == 1 && Q::vertex_defect(vertices_by_position(flat).at(apex), flat, np_flat) == 0);
+  assert(Q::vertex_defect(t, folded, np_folded) == 1 && Q::vertex_defect(e, folded, np_folded) == -1);
+  const auto identity = [](const Point& p) { return p; };
+  const auto e_before = sectors_of(e, folded, ffolded, identity);
+  std::multiset<int> e_defects_before;
+  for(const auto& sc : e_before) e_defects_before.insert(sc.second.first - sc.second.second);
+  assert(e_defects_before == std::multiset<int>({ -2, 1 }));
+
+  std::size_t refused = 0;
+  for(vertex_descriptor s : ball(flat, flat_t, 10))
+  {
+    if(on_border(s, flat) || on_feature(s, flat, fflat) || (valence(s, flat) != 3 && valence(s, flat) != 5)) continue;
+    for(const auto& sketch : feature_end_sketches(flat, fflat, s, flat_t, 10))
+      for(int motion = 0; motion < 4; ++motion)
+      {
+        const auto plan = Q::plan_qzip(flat, sketch, Q::Strip_operation(motion), np_flat);
+        if(!plan.is_realizable() || position(plan.path.back(), flat) != apex) continue;
+        std::vector<Point> sketch_points;
+        for(vertex_descriptor v : sketch) sketch_points.push_back(position(v, flat));
+        // on the flat grid, the +1 of t moves into e, below the line, and e has a third face there
+        Mesh moved;
+        const Feature_map<Mesh> fmoved = copy_with_features(flat, moved, flat_segments);
+        const auto done = Q::execute_qzip(moved, plan_on_copy(moved, fmoved, sketch_points, Q::Strip_operation(motion)),
+                                          CGAL::parameters::edge_is_constrained_map(fmoved));
+        assert(done.is_done() && done.reverse_status != Q::Reverse_qzip_status::SINGULARITIES_CANCELLED);
+        // besides t and e, it touched interior vertices off the features only, which the executor judges by their
+        // valences, the same on both grids
+        for(vertex_descriptor v : done.touched_vertices)
+          assert(!on_border(v, moved) && (!on_feature(v, moved, fmoved) || position(v, moved) == t_at || position(v, moved) == apex));
+        const auto at_moved = vertices_by_position(moved);
+        assert(Q::vertex_defect(at_moved.at(t_at), moved, CGAL::parameters::edge_is_constrained_map(fmoved)) == 0);
+        // the sectors of e after the surgery, with the numbers of quads they should have on the folded grid
+        const auto e_after = sectors_of(at_moved.at(apex), moved, fmoved, fold);
+        assert(e_after.size() == e_before.size());
+        int e_total_after = 0;
+        std::multiset<int> e_defects_after;
+        for(const auto& sc : e_after)
+        {
+          const int defect = sc.second.first - e_before.at(sc.first).second;
+          e_total_after += defect;
+          e_defects_after.insert(defect);
+        }
+        assert(e_total_after == 0); // t and e regular as totals: the check of the vertices' codes accepts
+        assert(e_defects_after == std::multiset<int>({ -1, 1 })); // a -1 below e, new: the sector check refuses
+
+        std::vector<Point> folded_sketch;
+        for(const Point& p : sketch_points) folded_sketch.push_back(fold(p));
+        const auto refusal = plan_on_copy(folded, ffolded, folded_sketch, Q::Strip_operation(motion));
+        assert(refusal.status == Q::Plan_status::EXECUTION_WOULD_FAIL &&
+               refusal.predicted_failure == Q::Execution_failure::SINGULARITY_CREATED);
+        Mesh work;
+        const Feature_map<Mesh> fwork = copy_with_features(folded, work, segments);
+        const auto np_work = CGAL::parameters::edge_is_constrained_map(fwork);
+        const auto at_work = vertices_by_position(work);
+        std::vector<vertex_descriptor> path;
+        for(const Point& p : folded_sketch) path.push_back(at_work.at(p));
+        const auto forced = Q::plan_qzip(work, path, Q::Strip_operation(motion), Q::parameters::simulate_chain(false, np_work));
+        assert(forced.is_realizable() && forced.operations == plan.operations && forced.path.size() == plan.path.size());
+        for(std::size_t j = 0; j < plan.path.size(); ++j)
+          assert(position(forced.path[j], work) == fold(position(plan.path[j], flat)));
+        const auto r = Q::execute_qzip(work, forced, np_work);
+        assert(!r.is_done() && r.failure == Q::Execution_failure::SINGULARITY_CREATED);
+        assert(CGAL::is_valid_polygon_mesh(work) && are_isomorphic(work, folded));
+        assert(sorted_positions(work) == sorted_positions(folded) && feature_segments(work, fwork) == segments);
+        ++refused;
+      }
+  }
+  return refused;
+}
+
+/// counts the valence-6 clean-up splits (Sec. 2.7) at a vertex next to a feature, and those whose delimiters are
+/// feature vertices: the chain's own splits are at path vertices, of valence 3 to 5 (a v5 start, a transient)
+template <typename Mesh>
+struct Cleanup_next_to_feature : CGAL::Qzip::Default_qzip_visitor<Mesh>
+{
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  const Feature_map<Mesh>* fm = nullptr;
+  std::size_t next_to_feature = 0, feature_delimiters = 0;
+  void on_split(halfedge_descriptor h1, halfedge_descriptor h2, const Mesh& m)
+  {
+    const auto v = target(h1, m);
+    if(valence(v, m) != 6) return;
+    bool near = false;
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, m), m)) near = near || on_feature(source(h, m), m, *fm);
+    next_to_feature += near;
+    feature_delimiters += on_feature(source(h1, m), m, *fm) || on_feature(source(h2, m), m, *fm);
+  }
+};
+
+/// The valence-6 clean-up next to a feature line: on a grid with a straight feature line and two chains of
+/// collapses planted along rows next to it (their 3-5 pairs one and two rows from the line), Q-zips between every
+/// two interior singularities (shortest surgery path, four motions) that leave a valence-6 vertex next to the line.
+/// The clean-up splits it between two opposite neighbours of valence 4, which each gain an edge: a feature vertex
+/// of valence 4 would take a quad too many in one of its sectors, so it is never chosen as a delimiter (before, the
+/// executor chose it and then refused the new feature defect: 2 plans of this grid were refused by the simulation,
+/// and the optimizer rolled back one surgery on quadwild_joint at 60 degrees). Every plan the local checks pass is
+/// done, keeps the invariants (Feature_invariants) and is undone exactly. Returns the number of those with a
+/// clean-up split next to the line.
+template <typename Mesh>
+std::size_t valence_6_cleanups_next_to_feature()
+{
+  namespace Q = CGAL::Qzip;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  Mesh base;
+  const Feature_segments segments = make_grid_with_feature(base, 16, 12, { { { 0, 6 } }, { { 16, 6 } } },
+                                                           { { { 3, 2, 5, 2, 1 } }, { { 12, 7, 10, 7, 0 } } });
+  const Feature_map<Mesh> fbase = mark_features(base, segments);
+  const auto np_base = CGAL::parameters::edge_is_constrained_map(fbase);
+  std::vector<vertex_descriptor> singular;
+  for(vertex_descriptor v : vertices(base))
+    if(!on_border(v, base) && !on_feature(v, base, fbase) && (valence(v, base) == 3 || valence(v, base) == 5)) singular.push_back(v);
+  std::size_t with_cleanup = 0;
+  for(vertex_descriptor s : singular)
+    for(vertex_descriptor t : singular)
+    {
+      const auto sketch = s == t ? std::vector<vertex_descriptor>() : Q::shortest_surgery_path(base, s, t, np_base);
+      if(sketch.empty()) continue;
+      std::vector<Point> sketch_points;
+      for(vertex_descriptor v : sketch) sketch_points.push_back(position(v, base));
+      for(int motion = 0; motion < 4; ++motion)
+      {
+        const auto plan = Q::plan_qzip(base, sketch, Q::Strip_operation(motion), np_base);
+        assert(plan.status != Q::Plan_status::EXECUTION_WOULD_FAIL);
+        if(!plan.is_realizable()) continue;
+        Mesh work;
+        const Feature_map<Mesh> fm = copy_with_features(base, work, segments);
+        Cleanup_next_to_feature<Mesh> watcher;
+        watcher.fm = &fm;
+        const Feature_invariants<Mesh> invariants(work, fm);
+        Q::Qzip_history<Mesh> history(work);
+        const auto r = Q::execute_qzip(work, plan_on_copy(work, fm, sketch_points, Q::Strip_operation(motion)), history,
+                                       CGAL::parameters::edge_is_constrained_map(fm).visitor(std::ref(watcher)));
+        assert(r.is_done());
+        invariants.check_after(work, fm, r.number_of_splits, r.number_of_collapses);
+        assert(watcher.feature_delimiters == 0);
+        with_cleanup += watcher.next_to_feature > 0;
+        history.undo_all();
+        assert(CGAL::is_valid_polygon_mesh(work) && are_isomorphic(work, base) && sorted_positions(work) == sorted_positions(base));
+      }
+    }
+  return with_cleanup;
+}
+
 /// Q-zips ending at feature defects on planted grids (a straight feature line, a feature line with a right-angle
 /// turn) and on real CAD meshes (fandisk bundled; anchor_sharp and joint from the shared corpus when present).
 inline void test_feature_end_moves()
@@ -621,6 +829,17 @@ inline void test_feature_end_moves()
     assert(c->moved > 0 && c->reversed == c->moved && c->rolled_back == 0 && c->no_reverse.empty());
   assert(grids.with_quad_too_few > 0 && grids.at_turn > 0);
   test_feature_end_sketch_orientation();
+  const std::size_t sector_refusals_sm = sector_check_refusals<Surface_mesh>();
+  const std::size_t sector_refusals_ph = sector_check_refusals<Polyhedron>();
+  std::cout << "  feature ends, sector check: " << sector_refusals_sm << " Q-zips moving a +1 into a sector -2 refused "
+            << "(the defects of t and e cancel as totals), rolled back when forced (" << sector_refusals_ph
+            << " on Polyhedron_3)" << std::endl;
+  assert(sector_refusals_sm > 0 && sector_refusals_ph == sector_refusals_sm);
+  const std::size_t cleanups_sm = valence_6_cleanups_next_to_feature<Surface_mesh>();
+  const std::size_t cleanups_ph = valence_6_cleanups_next_to_feature<Polyhedron>();
+  std::cout << "  valence-6 clean-up next to a feature line: " << cleanups_sm << " Q-zips done with it, delimiters off the "
+            << "feature (" << cleanups_ph << " on Polyhedron_3)" << std::endl;
+  assert(cleanups_sm > 0 && cleanups_ph == cleanups_sm);
 }
 
 } // namespace qzip_test

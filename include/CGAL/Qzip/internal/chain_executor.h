@@ -510,12 +510,15 @@ private:
     std::vector<halfedge_descriptor> in;
     for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm)) in.push_back(h);
     // halfedges_around_target turns clockwise: the fan strictly counterclockwise between in[i] and
-    // in[i-3] has two edges, so both copies get valence 4 and the two delimiters one more edge.
+    // in[i-3] has two edges, so both copies get valence 4 and the two delimiters one more edge: they must
+    // be regular interior vertices off the features (a feature vertex would get a quad too many in one
+    // of its sectors, a new singularity that the final check refuses).
     for(std::size_t i = 0; i < in.size(); ++i)
     {
       const halfedge_descriptor h1 = in[i], h2 = in[(i + in.size() - 3) % in.size()];
       const vertex_descriptor b = source(h1, pm), d = source(h2, pm);
-      if(valence(b, pm) != 4 || valence(d, pm) != 4 || is_border_vertex(b, pm) || is_border_vertex(d, pm))
+      if(valence(b, pm) != 4 || valence(d, pm) != 4 || is_border_vertex(b, pm) || is_border_vertex(d, pm) ||
+         on_feature(b) || on_feature(d))
         continue;
       if(split(h1, h2)) { ++cleanups; return true; }
     }
