@@ -51,10 +51,18 @@ class Reference_surface
   // triangles whose bounding box meets one of its cells (bucket_begin: compressed rows)
   double origin[3] = { 0, 0, 0 };
   double cell = 1;
+  long long last_cell[3] = { 0, 0, 0 };
   int bucket_bits = 0;
   std::vector<std::uint32_t> bucket_begin, bucket_triangles;
 
-  long long cell_index(double x, int axis) const { return (long long)(std::floor((x - origin[axis]) / cell)); }
+  // the cell of coordinate x along `axis`, clamped to the cells of the triangles' bounding box (the others
+  // hold no triangle)
+  long long cell_index(double x, int axis) const
+  {
+    const double t = (x - origin[axis]) / cell;
+    if(!(t > 0)) return 0;
+    return t < double(last_cell[axis]) ? (long long)(t) : last_cell[axis];
+  }
 
   std::size_t bucket(long long i, long long j, long long k) const
   {
@@ -71,12 +79,12 @@ class Reference_surface
           f(bucket(i, j, k));
   }
 
-  static bool in_range(long long i) { return i >= 0 && i < (1LL << 21); }
-
+  // the tree's answer; when it is `start` (no triangle is closer), the hint stays: it was the triangle of
+  // the previous answer, near `start` (the tree would name no triangle, or the first one, anywhere)
   Point fallback(const Point& p, const Point& start, std::size_t& hint) const
   {
-    const auto r = tree->closest_point_and_primitive(p, std::make_pair(start, triangles.begin()));
-    hint = std::size_t(r.second - triangles.begin()) + 1;
+    const auto r = tree->closest_point_and_primitive(p, std::make_pair(start, triangles.end()));
+    if(r.second != triangles.end()) hint = std::size_t(r.second - triangles.begin()) + 1;
     return r.first;
   }
 
@@ -112,6 +120,9 @@ public:
     const double span = (std::max)({ all.xmax() - all.xmin(), all.ymax() - all.ymin(), all.zmax() - all.zmin() });
     cell = (std::max)(cell, span / double(1LL << 20)); // every index within 21 bits
     if(!(cell > 0)) cell = 1;
+    last_cell[0] = (long long)((all.xmax() - origin[0]) / cell);
+    last_cell[1] = (long long)((all.ymax() - origin[1]) / cell);
+    last_cell[2] = (long long)((all.zmax() - origin[2]) / cell);
     bucket_bits = 1;
     while((std::size_t(1) << bucket_bits) < 4 * triangles.size()) ++bucket_bits;
     bucket_begin.assign((std::size_t(1) << bucket_bits) + 1, 0);
@@ -141,7 +152,6 @@ public:
     {
       lo[a] = cell_index(c[a] - r, a);
       hi[a] = cell_index(c[a] + r, a);
-      if(!in_range(lo[a]) || !in_range(hi[a])) return fallback(p, start, hint);
       n *= hi[a] - lo[a] + 1;
     }
     if(n > max_cells_per_query) return fallback(p, start, hint);
