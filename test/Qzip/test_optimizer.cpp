@@ -698,6 +698,88 @@ void test_untangle()
   for(auto v : all) assert(m.point(v).z() == 0);
 }
 
+// The smoother's reference surface (internal::Reference_surface) answers every closest-point query exactly as
+// CGAL::AABB_tree::closest_point(p, start) does, whatever its hint: on a Catmull-Clark sphere with a flat
+// side (its vertices at the bounding box), for points near the surface with the hint of the previous
+// answer (as the smoother queries), points inside and outside the bounding box (beyond its sides, where the
+// cells are clamped), far hints, and points that are their own `start` (on the surface: the start is the
+// answer, the hint stays one of the surface's triangles). And internal::is_simple_edge_path() on short and
+// long paths (compared pairwise, or sorted).
+void test_reference_surface()
+{
+  typedef K::Triangle_3 Triangle;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, std::vector<Triangle>::const_iterator> > > Tree;
+  Surface_mesh m;
+  make_cc_sphere(m, 2);
+  for(auto v : vertices(m)) // a flat side at x = -0.8
+    if(m.point(v).x() < -0.8) m.point(v) = Point(-0.8, m.point(v).y(), m.point(v).z());
+  Q::internal::Reference_surface<K> surface;
+  std::vector<Triangle> triangles;
+  std::vector<std::size_t> vertex_hint(num_vertices(m), 0);
+  for(auto f : faces(m))
+  {
+    std::vector<Surface_mesh::Vertex_index> fv(vertices_around_face(halfedge(f, m), m).begin(),
+                                              vertices_around_face(halfedge(f, m), m).end());
+    for(std::size_t i = 1; i + 1 < fv.size(); ++i)
+    {
+      const std::size_t t = surface.add(m.point(fv[0]), m.point(fv[i]), m.point(fv[i + 1]));
+      assert(t == triangles.size() + 1);
+      triangles.emplace_back(m.point(fv[0]), m.point(fv[i]), m.point(fv[i + 1]));
+      for(auto v : { fv[0], fv[i], fv[i + 1] }) vertex_hint[std::size_t(v)] = t;
+    }
+  }
+  surface.build();
+  Tree tree(triangles.begin(), triangles.end());
+  CGAL::Random rng(7);
+  const std::vector<Surface_mesh::Vertex_index> vs(vertices(m).begin(), vertices(m).end());
+  std::size_t answered_by_start = 0;
+  for(int i = 0; i < 40000; ++i)
+  {
+    const Surface_mesh::Vertex_index v = vs[std::size_t(rng.get_int(0, int(vs.size())))];
+    const Point& on = m.point(v);
+    std::size_t& hint = vertex_hint[std::size_t(v)];
+    Point p = on, start = on;
+    switch(i % 4)
+    {
+      case 0: // near the surface, the hint of the previous answer
+        p = Point(on.x() + rng.get_double(-0.05, 0.05), on.y() + rng.get_double(-0.05, 0.05), on.z() + rng.get_double(-0.05, 0.05));
+        break;
+      case 1: // anywhere around, outside the bounding box too
+        p = Point(rng.get_double(-1.6, 1.6), rng.get_double(-1.6, 1.6), rng.get_double(-1.6, 1.6));
+        break;
+      case 2: // its own start: on the surface
+        break;
+      default: // a far hint
+        p = Point(on.x() + rng.get_double(-0.2, 0.2), on.y() + rng.get_double(-0.2, 0.2), on.z() + rng.get_double(-0.2, 0.2));
+        hint = std::size_t(rng.get_int(1, int(triangles.size()) + 1));
+    }
+    const Point expected = tree.closest_point(p, start);
+    const Point got = surface.closest_point(p, start, hint);
+    assert(got == expected);
+    assert(hint >= 1 && hint <= triangles.size());
+    if(got == start && i % 4 == 2) ++answered_by_start;
+  }
+  std::cout << "reference surface: 40000 queries on " << triangles.size() << " triangles as the AABB tree answers them ("
+            << answered_by_start << " answered by their start)" << std::endl;
+  assert(answered_by_start > 0);
+
+  Surface_mesh grid;
+  make_quad_grid(grid, 40, 2);
+  std::vector<Surface_mesh::Vertex_index> row; // the bottom row, 41 vertices, then back along the next row
+  for(int k = 0; k <= 40; ++k)
+    for(auto v : vertices(grid)) if(grid.point(v) == Point(k, 0, 0)) row.push_back(v);
+  for(std::size_t n : { std::size_t(5), row.size() })
+  {
+    std::vector<Surface_mesh::Vertex_index> path(row.begin(), row.begin() + std::ptrdiff_t(n));
+    assert(Q::internal::is_simple_edge_path(path, grid));
+    path.push_back(path[path.size() - 2]); // back along the last edge
+    assert(!Q::internal::is_simple_edge_path(path, grid));
+    path.pop_back();
+    path.erase(path.begin() + 1); // a gap
+    assert(!Q::internal::is_simple_edge_path(path, grid));
+  }
+}
+
 // the shared corpus, when present: invariants on a few small meshes, both mesh types on one of them
 void test_corpus()
 {
@@ -737,6 +819,7 @@ int main(int argc, char** argv)
   test_end_game();
   test_look_ahead();
   test_untangle();
+  test_reference_surface();
   test_feature_sliding(fandisk);
   test_protection_and_features(fandisk);
   test_travel();

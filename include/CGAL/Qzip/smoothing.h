@@ -66,6 +66,19 @@ class Quad_smoother
   // feature vertices: their position when the smoother was built; for sliding ones, their two feature neighbors
   struct Feature_vertex { Point origin; bool slides; vertex_descriptor a, b; };
   std::unordered_map<vertex_descriptor, Feature_vertex, boost::hash<vertex_descriptor> > feature_vertices;
+  // the region being smoothed (see gather_springs()): each free vertex, its feature curve if it slides along
+  // one, and the end of its springs and of its quads in `springs` and `quads` (they start where those of the
+  // previous one end)
+  struct Sweep_vertex
+  {
+    vertex_descriptor v;
+    const Feature_vertex* feature; // in feature_vertices, filled once by the constructor
+    std::size_t springs_end, quads_end;
+  };
+  std::vector<Sweep_vertex> sweep;
+  std::vector<std::pair<vertex_descriptor, double> > springs; // a neighbour and the stiffness of the edge to it
+  std::vector<face_descriptor> quads;
+  std::vector<Point> targets; // of a sweep
 
 public:
   double step = 0.5; // fraction of the way towards the weighted centroid
@@ -212,55 +225,93 @@ public:
     return q;
   }
 
+  // the free vertices of `region` with their springs (the stiffness of each incident edge, by the
+  // valences at its ends) and their incident quads: smoothing moves vertices but changes no valence and
+  // no face
+  void gather_springs(const std::vector<vertex_descriptor>& region)
+  {
+    sweep.clear();
+    springs.clear();
+    quads.clear();
+    for(vertex_descriptor v : region)
+    {
+      if(is_fixed(v)) continue;
+      const auto fit = feature_vertices.find(v);
+      const Feature_vertex* feature = fit == feature_vertices.end() ? nullptr : &fit->second;
+      if(feature == nullptr)
+      {
+        const int dv = effective_valence(v);
+        for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+        {
+          const vertex_descriptor u = source(h, pm);
+          const int s = dv + effective_valence(u);
+          springs.emplace_back(u, s == 8 ? 1. : (s < 8 ? 0.5 : 2.));
+        }
+      }
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+        if(!is_border(h, pm) && is_quad(h, pm)) quads.push_back(face(h, pm));
+      sweep.push_back(Sweep_vertex{ v, feature, springs.size(), quads.size() });
+    }
+  }
+
+  // the number of inverted quads among quads[first, last) and the smallest scaled Jacobian among them (1 if none)
+  std::pair<int, double> quad_quality(std::size_t first, std::size_t last) const
+  {
+    int inverted = 0;
+    double m = 1;
+    for(std::size_t k = first; k < last; ++k)
+    {
+      const double j = quad_scaled_jacobian(quads[k], pm, CGAL::parameters::vertex_point_map(vpm));
+      if(j <= 0) ++inverted;
+      m = (std::min)(m, j);
+    }
+    return std::make_pair(inverted, m);
+  }
+
   // `iterations` Jacobi sweeps over the free vertices of `region` (in the given order); returns the
   // number of accepted moves. Sliding feature vertices are projected onto their feature curve, the others
   // onto the surface.
   std::size_t smooth(const std::vector<vertex_descriptor>& region, int iterations)
   {
-    std::vector<vertex_descriptor> free;
-    for(vertex_descriptor v : region) if(!is_fixed(v)) free.push_back(v);
-    std::vector<Point> targets(free.size());
+    gather_springs(region);
+    targets.resize(sweep.size());
     std::size_t accepted = 0;
     for(int it = 0; it < iterations; ++it)
     {
-      for(std::size_t i = 0; i < free.size(); ++i)
+      for(std::size_t i = 0; i < sweep.size(); ++i)
       {
-        const vertex_descriptor v = free[i];
-        const auto fit = feature_vertices.find(v);
-        if(fit != feature_vertices.end())
+        const Sweep_vertex& sv = sweep[i];
+        const Point& p = get(vpm, sv.v);
+        if(sv.feature != nullptr)
         {
-          const Point& p = get(vpm, v);
-          const Point m = CGAL::midpoint(get(vpm, fit->second.a), get(vpm, fit->second.b));
-          targets[i] = project_on_feature(v, p + typename GeomTraits::FT(step) * (m - p));
+          const Point m = CGAL::midpoint(get(vpm, sv.feature->a), get(vpm, sv.feature->b));
+          targets[i] = project_on_feature(sv.v, p + typename GeomTraits::FT(step) * (m - p));
           continue;
         }
-        const int dv = effective_valence(v);
         double x = 0, y = 0, z = 0, w = 0;
-        for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+        for(std::size_t k = (i == 0 ? 0 : sweep[i - 1].springs_end); k < sv.springs_end; ++k)
         {
-          const vertex_descriptor u = source(h, pm);
-          const int s = dv + effective_valence(u);
-          const double k = s == 8 ? 1. : (s < 8 ? 0.5 : 2.);
-          const Point& p = get(vpm, u);
-          x += k * CGAL::to_double(p.x()); y += k * CGAL::to_double(p.y()); z += k * CGAL::to_double(p.z());
-          w += k;
+          const double s = springs[k].second;
+          const Point& q = get(vpm, springs[k].first);
+          x += s * CGAL::to_double(q.x()); y += s * CGAL::to_double(q.y()); z += s * CGAL::to_double(q.z());
+          w += s;
         }
-        const Point& p = get(vpm, v);
         if(w == 0) { targets[i] = p; continue; }
         targets[i] = Point(p.x() + step * (x / w - p.x()), p.y() + step * (y / w - p.y()), p.z() + step * (z / w - p.z()));
       }
-      for(std::size_t i = 0; i < free.size(); ++i)
+      for(std::size_t i = 0; i < sweep.size(); ++i)
       {
-        const vertex_descriptor v = free[i];
-        const Point old = get(vpm, v);
-        const Point np = feature_vertices.count(v) == 0 ? project(v, targets[i], old) : targets[i];
+        const Sweep_vertex& sv = sweep[i];
+        const Point old = get(vpm, sv.v);
+        const Point np = sv.feature == nullptr ? project(sv.v, targets[i], old) : targets[i];
         if(np == old) continue;
         // kept if the incident quads stay above the floor, or else are not worse than before
-        put(vpm, v, np);
-        const double after = incident_quality(v).second;
+        const std::size_t first_quad = i == 0 ? 0 : sweep[i - 1].quads_end;
+        put(vpm, sv.v, np);
+        const double after = quad_quality(first_quad, sv.quads_end).second;
         if(after > 0 && after >= quality_floor) { ++accepted; continue; }
-        put(vpm, v, old);
-        if(after >= incident_quality(v).second) { put(vpm, v, np); ++accepted; }
+        put(vpm, sv.v, old);
+        if(after >= quad_quality(first_quad, sv.quads_end).second) { put(vpm, sv.v, np); ++accepted; }
       }
     }
     return accepted;
@@ -330,14 +381,25 @@ public:
         }
         Point best = old;
         std::pair<int, double> best_quality = before;
+        // every trial is projected from the triangle of `old` (the trials lie around it), and v keeps the
+        // triangle of the position it takes
+        const std::size_t old_hint = get(hint, v);
+        std::size_t best_hint = old_hint;
         for(const Point& trial : trials)
         {
+          put(hint, v, old_hint);
           const Point candidate = project(v, trial, old);
           put(vpm, v, candidate);
           const std::pair<int, double> q = incident_quality(v);
-          if(q.first <= best_quality.first && q.second > best_quality.second) { best = candidate; best_quality = q; }
+          if(q.first <= best_quality.first && q.second > best_quality.second)
+          {
+            best = candidate;
+            best_quality = q;
+            best_hint = get(hint, v);
+          }
         }
         put(vpm, v, best);
+        put(hint, v, best_hint);
         if(best == old) { stuck.insert(v); continue; }
         ++moved;
         ++moved_in_sweep;

@@ -183,9 +183,17 @@ bool is_simple_edge_path(const std::vector<typename boost::graph_traits<PolygonM
                          const PolygonMesh& pm)
 {
   if(path.size() < 2) return false;
-  std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> sorted(path);
-  std::sort(sorted.begin(), sorted.end());
-  if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+  if(path.size() <= 32) // most paths: comparing every pair costs less than sorting a copy
+  {
+    for(std::size_t j = 1; j < path.size(); ++j)
+      if(std::find(path.begin(), path.begin() + j, path[j]) != path.begin() + j) return false;
+  }
+  else
+  {
+    std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor> sorted(path);
+    std::sort(sorted.begin(), sorted.end());
+    if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+  }
   for(std::size_t j = 0; j + 1 < path.size(); ++j)
     if(!halfedge(path[j], path[j + 1], pm).second) return false;
   return true;

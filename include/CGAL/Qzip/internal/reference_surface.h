@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -45,16 +46,45 @@ class Reference_surface
   static constexpr int max_cells_per_query = 8;
 
   std::vector<Triangle> triangles;
-  std::vector<Bbox_3> boxes;
   std::unique_ptr<Tree> tree;
   // the grid: cells of side `cell` from `origin`, hashed into 2^bucket_bits buckets; a bucket lists the
-  // triangles whose bounding box meets one of its cells (bucket_begin: compressed rows)
+  // triangles whose bounding box meets one of its cells (bucket_begin: compressed rows), each with its
+  // bounding box (rounded outwards to floats: read in sequence, without visiting the triangle)
   double origin[3] = { 0, 0, 0 };
   double cell = 1;
+  long long last_cell[3] = { 0, 0, 0 };
   int bucket_bits = 0;
-  std::vector<std::uint32_t> bucket_begin, bucket_triangles;
+  struct Entry
+  {
+    float min[3], max[3];
+    std::uint32_t triangle;
+  };
+  std::vector<std::uint32_t> bucket_begin;
+  std::vector<Entry> bucket_entries;
+  // a triangle lies in the buckets of all the cells its box meets: one query reaches it once (the round
+  // of the query that reached it last; so queries, const as they are, must not run concurrently)
+  mutable std::vector<std::uint32_t> reached_in;
+  mutable std::uint32_t query_round = 0;
 
-  long long cell_index(double x, int axis) const { return (long long)(std::floor((x - origin[axis]) / cell)); }
+  static float round_down(double x)
+  {
+    const float f = float(x);
+    return double(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+  }
+  static float round_up(double x)
+  {
+    const float f = float(x);
+    return double(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  }
+
+  // the cell of coordinate x along `axis`, clamped to the cells of the triangles' bounding box (the others
+  // hold no triangle)
+  long long cell_index(double x, int axis) const
+  {
+    const double t = (x - origin[axis]) / cell;
+    if(!(t > 0)) return 0;
+    return t < double(last_cell[axis]) ? (long long)(t) : last_cell[axis];
+  }
 
   std::size_t bucket(long long i, long long j, long long k) const
   {
@@ -71,12 +101,12 @@ class Reference_surface
           f(bucket(i, j, k));
   }
 
-  static bool in_range(long long i) { return i >= 0 && i < (1LL << 21); }
-
+  // the tree's answer; when it is `start` (no triangle is closer), the hint stays: it was the triangle of
+  // the previous answer, near `start` (the tree would name no triangle, or the first one, anywhere)
   Point fallback(const Point& p, const Point& start, std::size_t& hint) const
   {
-    const auto r = tree->closest_point_and_primitive(p, std::make_pair(start, triangles.begin()));
-    hint = std::size_t(r.second - triangles.begin()) + 1;
+    const auto r = tree->closest_point_and_primitive(p, std::make_pair(start, triangles.end()));
+    if(r.second != triangles.end()) hint = std::size_t(r.second - triangles.begin()) + 1;
     return r.first;
   }
 
@@ -97,6 +127,7 @@ public:
     if(triangles.empty()) return;
     tree.reset(new Tree(triangles.begin(), triangles.end()));
     tree->build();
+    std::vector<Bbox_3> boxes;
     boxes.reserve(triangles.size());
     Bbox_3 all;
     double extent = 0;
@@ -112,15 +143,24 @@ public:
     const double span = (std::max)({ all.xmax() - all.xmin(), all.ymax() - all.ymin(), all.zmax() - all.zmin() });
     cell = (std::max)(cell, span / double(1LL << 20)); // every index within 21 bits
     if(!(cell > 0)) cell = 1;
+    last_cell[0] = (long long)((all.xmax() - origin[0]) / cell);
+    last_cell[1] = (long long)((all.ymax() - origin[1]) / cell);
+    last_cell[2] = (long long)((all.zmax() - origin[2]) / cell);
     bucket_bits = 1;
     while((std::size_t(1) << bucket_bits) < 4 * triangles.size()) ++bucket_bits;
     bucket_begin.assign((std::size_t(1) << bucket_bits) + 1, 0);
     for(const Bbox_3& b : boxes) for_each_cell(b, [&](std::size_t c) { ++bucket_begin[c + 1]; });
     for(std::size_t c = 1; c < bucket_begin.size(); ++c) bucket_begin[c] += bucket_begin[c - 1];
-    bucket_triangles.resize(bucket_begin.back());
+    bucket_entries.resize(bucket_begin.back());
     std::vector<std::uint32_t> cursor(bucket_begin.begin(), bucket_begin.end() - 1);
     for(std::size_t t = 0; t < triangles.size(); ++t)
-      for_each_cell(boxes[t], [&](std::size_t c) { bucket_triangles[cursor[c]++] = std::uint32_t(t); });
+    {
+      const Bbox_3& b = boxes[t];
+      const Entry e{ { round_down(b.xmin()), round_down(b.ymin()), round_down(b.zmin()) },
+                     { round_up(b.xmax()), round_up(b.ymax()), round_up(b.zmax()) }, std::uint32_t(t) };
+      for_each_cell(b, [&](std::size_t c) { bucket_entries[cursor[c]++] = e; });
+    }
+    reached_in.assign(triangles.size(), 0);
   }
 
   // the closest point to p as `tree.closest_point(p, start)` gives it; `hint` (1 + the index of a triangle
@@ -141,10 +181,11 @@ public:
     {
       lo[a] = cell_index(c[a] - r, a);
       hi[a] = cell_index(c[a] + r, a);
-      if(!in_range(lo[a]) || !in_range(hi[a])) return fallback(p, start, hint);
       n *= hi[a] - lo[a] + 1;
     }
     if(n > max_cells_per_query) return fallback(p, start, hint);
+    if(++query_round == 0) { std::fill(reached_in.begin(), reached_in.end(), 0u); query_round = 1; }
+    reached_in[hint - 1] = query_round;
     bool tie = false; // another point as close as `best`
     for(long long i = lo[0]; i <= hi[0]; ++i)
       for(long long j = lo[1]; j <= hi[1]; ++j)
@@ -153,17 +194,18 @@ public:
           const std::size_t bk = bucket(i, j, k);
           for(std::size_t e = bucket_begin[bk]; e < bucket_begin[bk + 1]; ++e)
           {
-            const std::size_t t = bucket_triangles[e];
-            if(t == hint - 1) continue;
-            const Bbox_3& b = boxes[t];
-            const double dx = (std::max)((std::max)(b.xmin() - c[0], c[0] - b.xmax()), 0.);
+            const Entry& b = bucket_entries[e];
+            const double dx = (std::max)((std::max)(double(b.min[0]) - c[0], c[0] - double(b.max[0])), 0.);
             double d2 = dx * dx;
             if(d2 > r2) continue;
-            const double dy = (std::max)((std::max)(b.ymin() - c[1], c[1] - b.ymax()), 0.);
+            const double dy = (std::max)((std::max)(double(b.min[1]) - c[1], c[1] - double(b.max[1])), 0.);
             d2 += dy * dy;
             if(d2 > r2) continue;
-            const double dz = (std::max)((std::max)(b.zmin() - c[2], c[2] - b.zmax()), 0.);
+            const double dz = (std::max)((std::max)(double(b.min[2]) - c[2], c[2] - double(b.max[2])), 0.);
             if(d2 + dz * dz > r2) continue;
+            const std::size_t t = b.triangle;
+            if(reached_in[t] == query_round) continue;
+            reached_in[t] = query_round;
             const Point q = GeomTraits().construct_projected_point_3_object()(triangles[t], p);
             const CGAL::Comparison_result cmp = GeomTraits().compare_distance_3_object()(p, q, best);
             if(cmp == CGAL::SMALLER) { best = q; best_triangle = t; tie = false; }

@@ -16,11 +16,9 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Named_function_parameters.h>
 
-#include <boost/functional/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -65,19 +63,20 @@ region_quality(const std::vector<typename boost::graph_traits<PolygonMesh>::vert
 {
   typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
-  std::unordered_set<face_descriptor, boost::hash<face_descriptor> > seen;
-  std::size_t inverted = 0;
-  double worst = 1;
+  std::vector<face_descriptor> quads;
   for(const auto v : region)
     for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-    {
-      if(is_border(h, pm) || !is_quad(h, pm)) continue;
-      const face_descriptor f = face(h, pm);
-      if(!seen.insert(f).second) continue;
-      const double j = quad_scaled_jacobian(f, pm, CGAL::parameters::vertex_point_map(vpm));
-      if(j <= 0) ++inverted;
-      worst = (std::min)(worst, j);
-    }
+      if(!is_border(h, pm) && is_quad(h, pm)) quads.push_back(face(h, pm));
+  std::sort(quads.begin(), quads.end());
+  quads.erase(std::unique(quads.begin(), quads.end()), quads.end());
+  std::size_t inverted = 0;
+  double worst = 1;
+  for(const face_descriptor f : quads)
+  {
+    const double j = quad_scaled_jacobian(f, pm, CGAL::parameters::vertex_point_map(vpm));
+    if(j <= 0) ++inverted;
+    worst = (std::min)(worst, j);
+  }
   return std::make_pair(inverted, worst);
 }
 
