@@ -116,9 +116,34 @@ public:
       if(get(fcm, face(h, pm))) return true; // h is not a border halfedge here
       if(get(ecm, edge(h, pm))) feature = true;
     }
-    if(!feature) return false;
+    return feature && sliding_feature(v) == nullptr;
+  }
+
+  // the record of v if v slides along the feature curve it was on when the smoother was built: its
+  // constrained edges are still exactly the two to its recorded neighbours (a Q-zip may since have given
+  // a constrained edge to the other copy of a split vertex, or `Surface_mesh` may have given the
+  // descriptor of a removed vertex to a new one); null otherwise
+  const Feature_vertex* sliding_feature(vertex_descriptor v) const
+  {
     const auto it = feature_vertices.find(v);
-    return it == feature_vertices.end() || !it->second.slides;
+    if(it == feature_vertices.end() || !it->second.slides) return nullptr;
+    int constrained = 0;
+    bool to_a = false, to_b = false;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      if(!get(ecm, edge(h, pm))) continue;
+      ++constrained;
+      to_a = to_a || source(h, pm) == it->second.a;
+      to_b = to_b || source(h, pm) == it->second.b;
+    }
+    return constrained == 2 && to_a && to_b ? &it->second : nullptr;
+  }
+
+  // where the feature vertex x was when the smoother was built (where it is, if it was not one then)
+  Point feature_origin(vertex_descriptor x) const
+  {
+    const auto it = feature_vertices.find(x);
+    return it == feature_vertices.end() ? get(vpm, x) : it->second.origin;
   }
 
   // records the vertices of constrained edges and which of them slide (not on the border, not on a
@@ -153,16 +178,16 @@ public:
   // was built: the edges v-a, v-b, and the next feature edges beyond a and b
   Point project_on_feature(vertex_descriptor v, const Point& p) const
   {
-    const Feature_vertex& fv = feature_vertices.at(v);
+    const Feature_vertex& fv = *sliding_feature(v);
     std::vector<std::pair<Point, Point> > segments;
-    segments.emplace_back(fv.origin, feature_vertices.at(fv.a).origin);
-    segments.emplace_back(fv.origin, feature_vertices.at(fv.b).origin);
+    segments.emplace_back(fv.origin, feature_origin(fv.a));
+    segments.emplace_back(fv.origin, feature_origin(fv.b));
     for(vertex_descriptor x : { fv.a, fv.b })
     {
-      const Feature_vertex& fx = feature_vertices.at(x);
-      if(!fx.slides) continue;
-      const vertex_descriptor y = fx.a == v ? fx.b : fx.a;
-      segments.emplace_back(fx.origin, feature_vertices.at(y).origin);
+      const Feature_vertex* fx = sliding_feature(x);
+      if(fx == nullptr) continue;
+      const vertex_descriptor y = fx->a == v ? fx->b : fx->a;
+      segments.emplace_back(fx->origin, feature_origin(y));
     }
     Point best = fv.origin;
     double best_d = (std::numeric_limits<double>::max)();
@@ -236,8 +261,7 @@ public:
     for(vertex_descriptor v : region)
     {
       if(is_fixed(v)) continue;
-      const auto fit = feature_vertices.find(v);
-      const Feature_vertex* feature = fit == feature_vertices.end() ? nullptr : &fit->second;
+      const Feature_vertex* feature = sliding_feature(v);
       if(feature == nullptr)
       {
         const int dv = effective_valence(v);
@@ -337,7 +361,7 @@ public:
       std::size_t moved_in_sweep = 0;
       for(vertex_descriptor v : region)
       {
-        if(is_fixed(v) || feature_vertices.count(v) != 0 || stuck.count(v) != 0) continue;
+        if(is_fixed(v) || sliding_feature(v) != nullptr || stuck.count(v) != 0) continue;
         const std::pair<int, double> before = incident_quality(v);
         if(before.second >= floor) continue;
         const Point old = get(vpm, v);
