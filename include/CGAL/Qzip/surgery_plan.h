@@ -466,8 +466,28 @@ plan_qzip(const PolygonMesh& pm,
     if(far_on_border && (!internal::is_border_vertex(plan.path[j], pm) || internal::is_border_vertex(plan.path[j + 1], pm)))
     { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
   }
-  // a v5 at an end of the path that a split delimits and that the clean-up could not split again
+  // E1: the last operation gives an interior v3 target one more edge, and the last guide's target is the moved
+  // v3. After a split or a no-operation that is a path vertex (checked above); after a collapse it is the near
+  // corner of the collapsed quad, the one next to `t` but `u`, which loses a face. On the border or a feature it
+  // takes the -1: the executor refuses that, unless it cancels a +1 there (in its sector, on a feature)
   const std::size_t n = plan.path.size();
+  if(!border_target && !feature_target && plan.target_valence == 3 && plan.path.back() == plan.target &&
+     is_collapse(plan.operations[n - 2]))
+  {
+    const auto h = internal::collapsed_quad(halfedge(plan.path[n - 2], plan.target, pm).first, plan.operations[n - 2], pm);
+    const auto into_moved_v3 = plan.operations[n - 2] == Strip_operation::RIGHT_COLLAPSE ? next(h, pm) : prev(h, pm);
+    const vertex_descriptor moved_v3 = target(into_moved_v3, pm);
+    if(on_cut(moved_v3) &&
+       !internal::with_defect_parameters(pm, np, [&](const auto& vpm, const auto& ecm_, const auto& gt)
+                                         { return internal::loses_a_face_to_regular(into_moved_v3, pm, vpm, ecm_, gt); }))
+    { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
+  }
+  // a feature target at the end of its curve (one constrained edge): its one sector is bounded on both sides by
+  // that edge, the border rules read in it find no gap, and the chain would leave `t` singular and create an
+  // interior v3 (refused once prepared, so that the plan shows what the executor would be given)
+  if(feature_target && internal::number_of_constrained_edges(plan.target, pm, ecm) == 1)
+  { plan.status = Plan_status::UNSUPPORTED_ENDPOINT; return plan; }
+  // a v5 at an end of the path that a split delimits and that the clean-up could not split again
   if(n >= 3 && plan.operations[0] == Strip_operation::NO_OPERATION && is_split(plan.operations[1]) &&
      internal::leaves_valence_6_without_cleanup(plan.path[0], plan.path[1], plan.path, pm))
   { plan.status = Plan_status::VALENCE_6_LEFT; return plan; }

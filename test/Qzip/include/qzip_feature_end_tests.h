@@ -762,6 +762,137 @@ std::size_t valence_6_cleanups_next_to_feature()
   return with_cleanup;
 }
 
+/// Forces `plan`, refused without the simulation, through `execute_qzip()` on a copy of `m` with the feature edges
+/// `segments`: the executor must roll it back, with the mesh, its positions and its feature edges as they were.
+/// Returns why it failed.
+template <typename Mesh>
+CGAL::Qzip::Execution_failure assert_forced_plan_fails(const Mesh& m, const Feature_segments& segments,
+                                                       const CGAL::Qzip::Surgery_plan<Mesh>& plan)
+{
+  namespace Q = CGAL::Qzip;
+  Mesh work;
+  const Feature_map<Mesh> fm = copy_with_features(m, work, segments);
+  const auto np = CGAL::parameters::edge_is_constrained_map(fm);
+  const auto at = vertices_by_position(work);
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> sketch;
+  for(auto v : plan.sketch) sketch.push_back(at.at(position(v, m)));
+  Q::Surgery_plan<Mesh> forced = Q::plan_qzip(work, sketch, plan.initial_operation, Q::parameters::simulate_chain(false, np));
+  assert(forced.status == plan.status && forced.operations == plan.operations && forced.path.size() == plan.path.size());
+  forced.status = Q::Plan_status::REALIZABLE;
+  const auto r = Q::execute_qzip(work, forced, np);
+  assert(!r.is_done() && r.failure != Q::Execution_failure::NONE);
+  assert(CGAL::is_valid_polygon_mesh(work) && are_isomorphic(work, m));
+  assert(sorted_positions(work) == sorted_positions(m) && feature_segments(work, fm) == segments);
+  return r.failure;
+}
+
+/// The moved v3 of an E1 end on a feature (manual, "End Rules E1-E3"): a Q-zip to an interior v3 `t` gives `t` one
+/// more edge, and the last guide's target, the moved v3, loses one. After a last collapse that is the corner of the
+/// collapsed quad next to `t` other than the path vertex `u`; on a feature it takes the -1 in the sector of that quad,
+/// which the executor refuses unless it cancels a +1 there. On grids with a feature line turning by a right angle at
+/// (8, 6) and a chain of collapses planted in its 270 degree sector, leaving 3-5 pairs next to the turn: every sketch
+/// from an interior singularity to an interior v3 (the shortest surgery path, and those arriving through each
+/// neighbour), four motions, planned without the simulation. Among the plans ending with a collapse whose moved v3
+/// would be a feature vertex, one that `plan_qzip()` accepts is done, keeping the invariants; one it refuses
+/// `BORDER_OR_CONSTRAINED` is rolled back when forced, the mesh unchanged. Returns the number of those that the
+/// executor refuses for a new singularity: without the check of `plan_qzip()` they pass and are rolled back.
+template <typename Mesh>
+std::size_t moved_v3_on_feature_refusals()
+{
+  namespace Q = CGAL::Qzip;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::size_t refused = 0;
+  for(const std::array<int, 5>& chain : { std::array<int, 5>{ { 9, 1, 9, 5, 1 } }, std::array<int, 5>{ { 13, 5, 9, 5, 0 } },
+                                          std::array<int, 5>{ { 13, 7, 9, 7, 1 } } })
+  {
+    Mesh base;
+    const Feature_segments segments = make_grid_with_feature(base, 16, 12, { { { 0, 6 } }, { { 8, 6 } }, { { 8, 12 } } }, { chain });
+    const Feature_map<Mesh> fbase = mark_features(base, segments);
+    const auto np_base = CGAL::parameters::edge_is_constrained_map(fbase);
+    for(vertex_descriptor t : vertices(base))
+    {
+      if(on_border(t, base) || on_feature(t, base, fbase) || valence(t, base) != 3) continue;
+      for(vertex_descriptor s : ball(base, t, 8))
+      {
+        if(s == t || on_border(s, base) || on_feature(s, base, fbase) || (valence(s, base) != 3 && valence(s, base) != 5)) continue;
+        for(const auto& sketch : feature_end_sketches(base, fbase, s, t, 8))
+          for(int motion = 0; motion < 4; ++motion)
+          {
+            const auto plan = Q::plan_qzip(base, sketch, Q::Strip_operation(motion), Q::parameters::simulate_chain(false, np_base));
+            const std::size_t n = plan.path.size();
+            if(plan.target != t || n < 2 || plan.path.back() != t || !Q::is_collapse(plan.operations[n - 2])) continue;
+            // the corner of the last collapsed quad next to t, other than u
+            const vertex_descriptor u = plan.path[n - 2];
+            const auto ut = halfedge(u, t, base).first;
+            const auto quad = plan.operations[n - 2] == Q::Strip_operation::RIGHT_COLLAPSE ? ut : opposite(ut, base);
+            vertex_descriptor moved_v3 = boost::graph_traits<Mesh>::null_vertex();
+            for(auto h : CGAL::halfedges_around_face(quad, base))
+              if(source(h, base) == t && target(h, base) != u) moved_v3 = target(h, base);
+              else if(target(h, base) == t && source(h, base) != u) moved_v3 = source(h, base);
+            if(!on_feature(moved_v3, base, fbase)) continue;
+            if(plan.is_realizable())
+            {
+              Mesh work;
+              const Feature_map<Mesh> fm = copy_with_features(base, work, segments);
+              const Feature_invariants<Mesh> invariants(work, fm);
+              std::vector<Point> sketch_points;
+              for(vertex_descriptor v : sketch) sketch_points.push_back(position(v, base));
+              const auto r = Q::execute_qzip(work, plan_on_copy(work, fm, sketch_points, Q::Strip_operation(motion)),
+                                             CGAL::parameters::edge_is_constrained_map(fm));
+              assert(r.is_done());
+              invariants.check_after(work, fm, r.number_of_splits, r.number_of_collapses);
+            }
+            else if(plan.status == Q::Plan_status::BORDER_OR_CONSTRAINED)
+              refused += assert_forced_plan_fails(base, segments, plan) == Q::Execution_failure::SINGULARITY_CREATED;
+          }
+      }
+    }
+  }
+  return refused;
+}
+
+/// A feature target at the end of its curve: a vertex t with a single constrained edge t-e, whose one sector is
+/// bounded on both sides by that edge (manual, "Feature End Points"). On a grid whose feature line ends at
+/// t = (5, 6), lifted into a cone point (four quads in about 270 degrees where three are expected: +1), and a chain
+/// of collapses planted to the line at (3, 6) from above, which leaves e = (4, 6) with -1: the border rules read in
+/// the sector of t find no gap, and the chain would leave t's +1 and create an interior v3. Every sketch from an
+/// interior singularity to t, four motions, planned without the simulation, is refused; a plan refused
+/// `UNSUPPORTED_ENDPOINT` once prepared (its path goes on to e) is rolled back when forced, the mesh unchanged.
+/// Returns the number of those.
+template <typename Mesh>
+std::size_t curve_end_refusals()
+{
+  namespace Q = CGAL::Qzip;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  Mesh base;
+  const Feature_map<Mesh> fbase = mark_features(base, make_grid_with_feature(base, 16, 12, { { { 0, 6 } }, { { 5, 6 } } },
+                                                                             { { { 3, 11, 3, 6, 1 } } }));
+  const vertex_descriptor t = vertices_by_position(base).at(Point(5, 6, 0));
+  const vertex_descriptor e = vertices_by_position(base).at(Point(4, 6, 0));
+  put(get(CGAL::vertex_point, base), t, Point(5, 6, 0.8)); // corners of about 67 degrees
+  const Feature_segments segments = feature_segments(base, fbase);
+  const auto np_base = CGAL::parameters::edge_is_constrained_map(fbase);
+  assert(Q::vertex_defect(t, base, np_base) == 1 && Q::vertex_defect(e, base, np_base) == -1);
+  assert(CGAL::Qzip::internal::number_of_constrained_edges(t, base, fbase) == 1);
+  std::size_t refused = 0;
+  for(vertex_descriptor s : ball(base, t, 10))
+  {
+    if(on_border(s, base) || on_feature(s, base, fbase) || (valence(s, base) != 3 && valence(s, base) != 5)) continue;
+    for(const auto& sketch : feature_end_sketches(base, fbase, s, t, 10))
+      for(int motion = 0; motion < 4; ++motion)
+      {
+        const auto plan = Q::plan_qzip(base, sketch, Q::Strip_operation(motion), Q::parameters::simulate_chain(false, np_base));
+        assert(!plan.is_realizable());
+        if(plan.status == Q::Plan_status::UNSUPPORTED_ENDPOINT && plan.path.back() != t)
+        {
+          assert(plan.path.back() == e);
+          refused += assert_forced_plan_fails(base, segments, plan) == Q::Execution_failure::SINGULARITY_CREATED;
+        }
+      }
+  }
+  return refused;
+}
+
 /// Q-zips ending at feature defects on planted grids (a straight feature line, a feature line with a right-angle
 /// turn) and on real CAD meshes (fandisk bundled; anchor_sharp and joint from the shared corpus when present).
 inline void test_feature_end_moves()
@@ -835,6 +966,16 @@ inline void test_feature_end_moves()
             << "(the defects of t and e cancel as totals), rolled back when forced (" << sector_refusals_ph
             << " on Polyhedron_3)" << std::endl;
   assert(sector_refusals_sm > 0 && sector_refusals_ph == sector_refusals_sm);
+  const std::size_t moved_v3_sm = moved_v3_on_feature_refusals<Surface_mesh>();
+  const std::size_t moved_v3_ph = moved_v3_on_feature_refusals<Polyhedron>();
+  std::cout << "  interior v3 targets whose moved v3 would be a feature vertex: " << moved_v3_sm << " plans refused "
+            << "without the simulation, rolled back when forced (" << moved_v3_ph << " on Polyhedron_3)" << std::endl;
+  assert(moved_v3_sm > 0 && moved_v3_ph == moved_v3_sm);
+  const std::size_t curve_ends_sm = curve_end_refusals<Surface_mesh>();
+  const std::size_t curve_ends_ph = curve_end_refusals<Polyhedron>();
+  std::cout << "  feature targets at the end of their curve: " << curve_ends_sm << " plans refused without the "
+            << "simulation, rolled back when forced (" << curve_ends_ph << " on Polyhedron_3)" << std::endl;
+  assert(curve_ends_sm > 0 && curve_ends_ph == curve_ends_sm);
   const std::size_t cleanups_sm = valence_6_cleanups_next_to_feature<Surface_mesh>();
   const std::size_t cleanups_ph = valence_6_cleanups_next_to_feature<Polyhedron>();
   std::cout << "  valence-6 clean-up next to a feature line: " << cleanups_sm << " Q-zips done with it, delimiters off the "

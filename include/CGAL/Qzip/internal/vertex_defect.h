@@ -47,6 +47,17 @@ bool is_on_constrained_edge(typename boost::graph_traits<PolygonMesh>::vertex_de
   return false;
 }
 
+// The number of constrained edges incident to `v` (one at the end of a feature curve).
+template <typename PolygonMesh, typename EdgeIsConstrainedMap>
+std::size_t number_of_constrained_edges(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                                        const PolygonMesh& pm, const EdgeIsConstrainedMap& ecm)
+{
+  std::size_t n = 0;
+  for(auto h : halfedges_around_target(halfedge(v, pm), pm))
+    if(get(ecm, edge(h, pm))) ++n;
+  return n;
+}
+
 // Angle (radians, in [0, pi]) at `target(h, pm)` between the two edges of `face(h, pm)` incident to it,
 // i.e. between `h` (reversed) and `next(h, pm)`. A zero-length edge gives 0.
 template <typename PolygonMesh, typename VertexPointMap, typename GeomTraits>
@@ -177,6 +188,21 @@ Sector_info sector_info(typename boost::graph_traits<PolygonMesh>::halfedge_desc
   }
   info.expected_faces = ideal_number_of_faces(theta);
   return info;
+}
+
+// Whether `target(h, pm)` becomes regular when it loses `face(h, pm)` (`h` is not a border halfedge): it has one
+// face too many, and on a feature away from the border (where the executor also checks each sector) it has it
+// in the sector of that face.
+template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap, typename GeomTraits>
+bool loses_a_face_to_regular(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
+                             const PolygonMesh& pm, const VertexPointMap& vpm,
+                             const EdgeIsConstrainedMap& ecm, const GeomTraits& gt)
+{
+  const Vertex_defect_info info = vertex_defect_info(target(h, pm), pm, vpm, ecm, gt);
+  if(info.defect != 1) return false;
+  if(info.on_border || !info.cut) return true;
+  const Sector_info sector = sector_info(h, pm, vpm, ecm, gt, [](auto) {});
+  return sector.faces - sector.expected_faces == 1;
 }
 
 } // namespace internal
