@@ -61,7 +61,7 @@ enum class Plan_status
 {
   REALIZABLE,            ///< the plan can be executed
   INVALID_PATH,          ///< the path is not a simple edge path of at least one edge
-  UNSUPPORTED_ENDPOINT,  ///< an end of the path is not an interior vertex of valence 3 or 5 (nor, for the terminal one, a supported border defect, or a feature defect whose other sectors are regular; see `plan_qzip()`)
+  UNSUPPORTED_ENDPOINT,  ///< an end of the path is not an interior vertex of valence 3 or 5 (nor, for the terminal one, a supported border defect, or a feature defect, not at the end of its curve, whose other sectors are regular; see `plan_qzip()`)
   ENDPOINT_ADJUSTMENT,   ///< an end-point adjustment needs a vertex on the border
   NOT_SIMPLE_AFTER_ADJUSTMENT, ///< the adjusted path is not simple
   NOTHING_TO_DO,         ///< the adjusted plan has no collapse and no split (e.g. two adjacent v3 and a split motion)

@@ -238,7 +238,7 @@ interior vertex of valence 3 or 5) to the terminal singularity `sketch.back()` (
 vertex with one quad too many on a straight piece of border or at a corner, whose defect then moves by
 one border edge, or with one quad too few on a straight piece of border, reached along the border, or at
 a concave corner; see the user manual, "Border End Points"; or a feature defect: a vertex of a constrained edge,
-away from the border, with one quad too many or too few in the sector between two constrained edges that the
+away from the border and not at the end of its curve (a single constrained edge), with one quad too many or too few in the sector between two constrained edges that the
 last edge of the sketch arrives in, its other sectors regular, prepared like a border end in that sector, see
 the user manual, "Feature End Points"), with `initial_operation` as the compass at
 the initial singularity (one of the four motions of the pair). When `sketch.front()` is such a border
