@@ -14,7 +14,7 @@
 //   --measure      recount the singularities after every surgery (slow) to measure how often the change
 //                  predicted from the plan is the actual one (meshes below 20k quads)
 //   --mesh FILE    only this mesh (repeatable): no corpus, scaling series nor genus-3 test
-//   --trace        print every batch of the last run on stderr (singularities, faces, time)
+//   --trace        print every batch of the last run on stderr (singularities, faces, wall and CPU time)
 //   --max-batches N, --patience N  the parameters of the Default_stop_predicate of the runs (200, 20)
 //   --count-stop   stop on No_improvement_stop_predicate (fewer singularities) instead of on progress
 //   --seed S       the random seed of the runs (default 0)
@@ -92,11 +92,14 @@ struct Bench_stop
 
 struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
 {
+  std::clock_t start = 0;
+  void on_started(const Q::Optimizer_statistics&) { start = std::clock(); }
   void on_batch_finished(const Q::Optimizer_statistics& s)
   {
     std::cerr << "    batch " << s.batch << ": " << s.number_of_singularities << " singularities, " << s.number_of_faces
               << " faces, pairing distance " << s.pairing_distance << ", " << s.candidates_in_last_batch << " candidates, " << s.surgeries_in_last_batch << " surgeries (so far " << s.number_of_skipped_surgeries << " skipped, " << s.number_of_undone_surgeries << " undone, " << s.number_of_failed_surgeries << " failed), " << s.elapsed_seconds << " s (scoring "
-              << s.scoring_seconds << ", execution " << s.execution_seconds << ")" << std::endl;
+              << s.scoring_seconds << ", execution " << s.execution_seconds << "), CPU "
+              << double(std::clock() - start) / CLOCKS_PER_SEC << " s" << std::endl;
   }
 };
 
