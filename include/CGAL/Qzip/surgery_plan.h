@@ -468,8 +468,9 @@ plan_qzip(const PolygonMesh& pm,
   }
   // E1: the last operation gives an interior v3 target one more edge, and the last guide's target is the moved
   // v3. After a split or a no-operation that is a path vertex (checked above); after a collapse it is the near
-  // corner of the collapsed quad, the one next to `t` but `u`, which loses a face. On the border or a feature it
-  // takes the -1: the executor refuses that, unless it cancels a +1 there (in its sector, on a feature)
+  // corner of the collapsed quad, the one next to `t` but `u`, which loses a face. On a feature it takes the -1:
+  // the executor refuses that, unless it cancels a +1 in that sector. (A moved v3 on the border is left to the
+  // simulation: refusing it here changed the optimizer's results on a mesh with borders, untested.)
   const std::size_t n = plan.path.size();
   if(!border_target && !feature_target && plan.target_valence == 3 && plan.path.back() == plan.target &&
      is_collapse(plan.operations[n - 2]))
@@ -477,7 +478,7 @@ plan_qzip(const PolygonMesh& pm,
     const auto h = internal::collapsed_quad(halfedge(plan.path[n - 2], plan.target, pm).first, plan.operations[n - 2], pm);
     const auto into_moved_v3 = plan.operations[n - 2] == Strip_operation::RIGHT_COLLAPSE ? next(h, pm) : prev(h, pm);
     const vertex_descriptor moved_v3 = target(into_moved_v3, pm);
-    if(on_cut(moved_v3) &&
+    if(on_feature(moved_v3) && !internal::is_border_vertex(moved_v3, pm) &&
        !internal::with_defect_parameters(pm, np, [&](const auto& vpm, const auto& ecm_, const auto& gt)
                                          { return internal::loses_a_face_to_regular(into_moved_v3, pm, vpm, ecm_, gt); }))
     { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
