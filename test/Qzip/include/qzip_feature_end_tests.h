@@ -960,27 +960,20 @@ inline void test_feature_end_moves()
     assert(c->moved > 0 && c->reversed == c->moved && c->rolled_back == 0 && c->no_reverse.empty());
   assert(grids.with_quad_too_few > 0 && grids.at_turn > 0);
   test_feature_end_sketch_orientation();
-  const std::size_t sector_refusals_sm = sector_check_refusals<Surface_mesh>();
-  const std::size_t sector_refusals_ph = sector_check_refusals<Polyhedron>();
-  std::cout << "  feature ends, sector check: " << sector_refusals_sm << " Q-zips moving a +1 into a sector -2 refused "
-            << "(the defects of t and e cancel as totals), rolled back when forced (" << sector_refusals_ph
-            << " on Polyhedron_3)" << std::endl;
-  assert(sector_refusals_sm > 0 && sector_refusals_ph == sector_refusals_sm);
-  const std::size_t moved_v3_sm = moved_v3_on_feature_refusals<Surface_mesh>();
-  const std::size_t moved_v3_ph = moved_v3_on_feature_refusals<Polyhedron>();
-  std::cout << "  interior v3 targets whose moved v3 would be a feature vertex: " << moved_v3_sm << " plans refused "
-            << "without the simulation, rolled back when forced (" << moved_v3_ph << " on Polyhedron_3)" << std::endl;
-  assert(moved_v3_sm > 0 && moved_v3_ph == moved_v3_sm);
-  const std::size_t curve_ends_sm = curve_end_refusals<Surface_mesh>();
-  const std::size_t curve_ends_ph = curve_end_refusals<Polyhedron>();
-  std::cout << "  feature targets at the end of their curve: " << curve_ends_sm << " plans refused without the "
-            << "simulation, rolled back when forced (" << curve_ends_ph << " on Polyhedron_3)" << std::endl;
-  assert(curve_ends_sm > 0 && curve_ends_ph == curve_ends_sm);
-  const std::size_t cleanups_sm = valence_6_cleanups_next_to_feature<Surface_mesh>();
-  const std::size_t cleanups_ph = valence_6_cleanups_next_to_feature<Polyhedron>();
-  std::cout << "  valence-6 clean-up next to a feature line: " << cleanups_sm << " Q-zips done with it, delimiters off the "
-            << "feature (" << cleanups_ph << " on Polyhedron_3)" << std::endl;
-  assert(cleanups_sm > 0 && cleanups_ph == cleanups_sm);
+  // a number of cases met on both mesh types: printed, positive and the same
+  const auto on_both = [](const char* what, std::size_t on_surface_mesh, std::size_t on_polyhedron)
+  {
+    std::cout << "  " << what << ": " << on_surface_mesh << " (" << on_polyhedron << " on Polyhedron_3)" << std::endl;
+    assert(on_surface_mesh > 0 && on_polyhedron == on_surface_mesh);
+  };
+  on_both("feature ends, sector check: Q-zips moving a +1 into a sector -2 refused (the defects of t and e cancel as "
+          "totals), rolled back when forced", sector_check_refusals<Surface_mesh>(), sector_check_refusals<Polyhedron>());
+  on_both("interior v3 targets whose moved v3 would be a feature vertex: plans refused without the simulation, rolled "
+          "back when forced", moved_v3_on_feature_refusals<Surface_mesh>(), moved_v3_on_feature_refusals<Polyhedron>());
+  on_both("feature targets at the end of their curve: plans refused without the simulation, rolled back when forced",
+          curve_end_refusals<Surface_mesh>(), curve_end_refusals<Polyhedron>());
+  on_both("valence-6 clean-up next to a feature line: Q-zips done with it, delimiters off the feature",
+          valence_6_cleanups_next_to_feature<Surface_mesh>(), valence_6_cleanups_next_to_feature<Polyhedron>());
 }
 
 } // namespace qzip_test
