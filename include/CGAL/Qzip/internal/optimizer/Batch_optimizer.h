@@ -473,6 +473,19 @@ private:
     return internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect != 0;
   }
 
+  // the vertices reached from `shell` without entering those stamped `outer_epoch` (see execute())
+  std::vector<vertex_descriptor> region_within_outer(const std::vector<vertex_descriptor>& shell)
+  {
+    ++search_epoch;
+    std::vector<int> level;
+    return vertex_ball(shell, (std::numeric_limits<int>::max)(), pm, level, [this](vertex_descriptor v)
+    {
+      if(get(search_stamp, v) == search_epoch || get(outer_stamp, v) == outer_epoch) return false;
+      put(search_stamp, v, search_epoch);
+      return true;
+    });
+  }
+
   // the number of singular vertices within four edges of the path of a surgery just executed: the
   // vertices reached from the touched vertices and from `shell` (the vertices at distance four before
   // the surgery, never removed) without entering the vertices at distance five (stamped `outer_epoch`,
@@ -526,29 +539,28 @@ private:
     // read once the path is known to be alive (a skipped plan may name dead vertices), before the ends move
     const Surgery_key surgery_key = require_decrease ? cand.key : key(plan);
     // A surgery only removes vertices within three edges of its path (the far corners of the clean-up);
-    // the vertices at distance four are never touched: they stay alive through an undo and lead back
-    // to the re-created vertices, whose descriptors are new (or recycled with reset properties).
+    // the vertices at distance four (the shell) and five (stamped `outer_epoch`) are never touched: they
+    // stay alive through an undo, and the region they enclose holds the re-created vertices, whose
+    // descriptors are new (or recycled: with reset properties on Surface_mesh, with those of whatever
+    // element had the address on Polyhedron_3).
     std::vector<int> level;
-    std::vector<vertex_descriptor> region = ball(plan.path, require_decrease ? 5 : 4, level);
+    std::vector<vertex_descriptor> region = ball(plan.path, 5, level);
     std::vector<vertex_descriptor> shell;
     std::size_t singular_before = 0;
-    if(require_decrease)
+    ++outer_epoch;
+    std::size_t inside = 0;
+    for(std::size_t i = 0; i < region.size(); ++i)
     {
-      ++outer_epoch;
-      std::size_t inside = 0;
-      for(std::size_t i = 0; i < region.size(); ++i)
+      if(level[i] == 5) put(outer_stamp, region[i], outer_epoch);
+      else
       {
-        if(level[i] == 5) put(outer_stamp, region[i], outer_epoch);
-        else
-        {
-          if(is_singular_now(region[i])) ++singular_before;
-          region[inside] = region[i];
-          level[inside++] = level[i];
-        }
+        if(require_decrease && is_singular_now(region[i])) ++singular_before;
+        region[inside] = region[i];
+        level[inside++] = level[i];
       }
-      region.resize(inside);
-      level.resize(inside);
     }
+    region.resize(inside);
+    level.resize(inside);
     std::vector<vertex_descriptor> inner;
     for(std::size_t i = 0; i < region.size(); ++i)
     {
@@ -566,7 +578,13 @@ private:
     auto mark_after_undo = [&]()
     {
       mark(region);           // no walk: some of these descriptors may be dead
-      const std::vector<vertex_descriptor> around = ball(shell, 4); // walks from vertices that are alive
+      // walks from vertices that are alive: four edges around the shell, and the whole region again (a
+      // vertex inside a bend of the path may be more than four edges from the shell), so that every
+      // re-created vertex gets its marks whatever its descriptor carried
+      const std::vector<vertex_descriptor> enclosed = region_within_outer(shell);
+      std::vector<vertex_descriptor> around = ball(shell, 4);
+      for(vertex_descriptor v : enclosed)
+        if(get(search_stamp, v) != search_epoch) around.push_back(v);
       mark(around);
       for(vertex_descriptor v : around)
       {
