@@ -485,6 +485,36 @@ void test_travel()
   assert(vis.batches_with_more > 0);
 }
 
+// Undone surgeries on two bundled meshes: the same result on Surface_mesh and on Polyhedron_3, run after
+// other work in the process. An undo re-creates vertices with new descriptors, recycled on Surface_mesh
+// (reset properties) and maybe at the address of a removed vertex on Polyhedron_3 (its stamps, depending on
+// the heap): each must get back the marks and scar stamps of the vertex it replaces, also inside a bend of
+// the path, more than four edges from the region's shell (polylap_suzanne_half met such a vertex).
+void test_same_result_after_undos(const std::string& data_dir)
+{
+  for(const char* name : { "polylap_suzanne_half.obj", "trimesh_target.obj" })
+  {
+    Surface_mesh sm;
+    Polyhedron ph;
+    if(!read_mesh(data_dir + name, sm) || !read_mesh(data_dir + name, ph))
+    {
+      std::cerr << "cannot read " << data_dir << name << std::endl;
+      assert(false);
+    }
+    Q::preprocess_valences(sm);
+    Q::preprocess_valences(ph);
+    const Q::Optimizer_statistics s = Q::optimize_singularities(sm);
+    const Q::Optimizer_statistics sp = Q::optimize_singularities(ph);
+    std::cout << name << " on both mesh types: " << s.number_of_surgeries << " surgeries, "
+              << s.number_of_undone_surgeries << " undone, " << s.number_of_singularities << " singularities left"
+              << std::endl;
+    assert(s.number_of_undone_surgeries > 0);
+    assert(sp.number_of_surgeries == s.number_of_surgeries && sp.number_of_singularities == s.number_of_singularities);
+    assert(are_isomorphic(sm, ph));
+    assert(sorted_points(sm) == sorted_points(ph));
+  }
+}
+
 // the first n singularities other than x1 and x2 that the context gives at v (a vertex of a closed mesh),
 // asked right after the scoring's own questions (so maybe answered by labels kept from earlier batches),
 // are at the distances of the first ones a plain breadth-first search finds
@@ -850,6 +880,7 @@ int main(int argc, char** argv)
   test_feature_sliding(fandisk);
   test_protection_and_features(fandisk);
   test_travel();
+  test_same_result_after_undos("data/");
   test_context_across_batches<Surface_mesh>();
   test_context_across_batches<Polyhedron>();
   test_corpus();
