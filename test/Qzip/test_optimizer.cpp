@@ -261,8 +261,9 @@ struct Features
   std::map<sm_vertex, int> degree;
   std::map<sm_vertex, Point> points;
 
+  // marks the edges whose dihedral angle is above 60 degrees in `feature`
   template <typename FeatureMap>
-  void mark(Surface_mesh& m, FeatureMap feature)
+  static void mark_sharp_edges(const Surface_mesh& m, FeatureMap feature)
   {
     for(auto e : CGAL::edges(m))
     {
@@ -271,6 +272,13 @@ struct Features
       const auto n1 = PMP::compute_face_normal(face(h, m), m), n2 = PMP::compute_face_normal(face(opposite(h, m), m), m);
       if(n1 * n2 < std::cos(60. * CGAL_PI / 180.)) put(feature, e, true);
     }
+  }
+
+  // marks the sharp edges and records them
+  template <typename FeatureMap>
+  void mark(const Surface_mesh& m, FeatureMap feature)
+  {
+    mark_sharp_edges(m, feature);
     record(m, feature);
   }
 
@@ -854,8 +862,7 @@ void test_corpus()
   Surface_mesh m;
   if(!read_mesh(dir + "/gen_instantmeshes_rocker_arm.obj", m)) { std::cerr << "cannot read the rocker arm" << std::endl; assert(false); }
   auto feature = m.add_property_map<boost::graph_traits<Surface_mesh>::edge_descriptor, bool>("e:feature", false).first;
-  Features marked;
-  marked.mark(m, feature);
+  Features::mark_sharp_edges(m, feature);
   Q::preprocess_valences(m, CGAL::parameters::edge_is_constrained_map(feature));
   Features features;
   features.record(m, feature);

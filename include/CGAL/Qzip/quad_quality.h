@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 namespace CGAL {
 namespace Qzip {
@@ -109,6 +110,27 @@ double quad_scaled_jacobian(typename boost::graph_traits<PolygonMesh>::face_desc
   }
   return result;
 }
+
+namespace internal {
+
+// The number of inverted quads (scaled Jacobian <= 0) among the quads [first, last) and their smallest scaled
+// Jacobian (1 if none).
+template <typename FaceIterator, typename PolygonMesh, typename VertexPointMap>
+std::pair<std::size_t, double> quads_quality(FaceIterator first, FaceIterator last, const PolygonMesh& pm,
+                                             const VertexPointMap& vpm)
+{
+  std::size_t inverted = 0;
+  double worst = 1;
+  for(; first != last; ++first)
+  {
+    const double j = quad_scaled_jacobian(*first, pm, CGAL::parameters::vertex_point_map(vpm));
+    if(j <= 0) ++inverted;
+    worst = (std::min)(worst, j);
+  }
+  return std::make_pair(inverted, worst);
+}
+
+} // namespace internal
 
 } // namespace Qzip
 } // namespace CGAL

@@ -278,18 +278,10 @@ public:
     }
   }
 
-  // the number of inverted quads among quads[first, last) and the smallest scaled Jacobian among them (1 if none)
-  std::pair<int, double> quad_quality(std::size_t first, std::size_t last) const
+  // the smallest scaled Jacobian among quads[first, last) (1 if none)
+  double worst_quad(std::size_t first, std::size_t last) const
   {
-    int inverted = 0;
-    double m = 1;
-    for(std::size_t k = first; k < last; ++k)
-    {
-      const double j = quad_scaled_jacobian(quads[k], pm, CGAL::parameters::vertex_point_map(vpm));
-      if(j <= 0) ++inverted;
-      m = (std::min)(m, j);
-    }
-    return std::make_pair(inverted, m);
+    return quads_quality(quads.begin() + std::ptrdiff_t(first), quads.begin() + std::ptrdiff_t(last), pm, vpm).second;
   }
 
   // `iterations` Jacobi sweeps over the free vertices of `region` (in the given order); returns the
@@ -332,10 +324,10 @@ public:
         // kept if the incident quads stay above the floor, or else are not worse than before
         const std::size_t first_quad = i == 0 ? 0 : sweep[i - 1].quads_end;
         put(vpm, sv.v, np);
-        const double after = quad_quality(first_quad, sv.quads_end).second;
+        const double after = worst_quad(first_quad, sv.quads_end);
         if(after > 0 && after >= quality_floor) { ++accepted; continue; }
         put(vpm, sv.v, old);
-        if(after >= quad_quality(first_quad, sv.quads_end).second) { put(vpm, sv.v, np); ++accepted; }
+        if(after >= worst_quad(first_quad, sv.quads_end)) { put(vpm, sv.v, np); ++accepted; }
       }
     }
     return accepted;

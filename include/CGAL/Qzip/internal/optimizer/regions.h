@@ -69,15 +69,7 @@ region_quality(const std::vector<typename boost::graph_traits<PolygonMesh>::vert
       if(!is_border(h, pm) && is_quad(h, pm)) quads.push_back(face(h, pm));
   std::sort(quads.begin(), quads.end());
   quads.erase(std::unique(quads.begin(), quads.end()), quads.end());
-  std::size_t inverted = 0;
-  double worst = 1;
-  for(const face_descriptor f : quads)
-  {
-    const double j = quad_scaled_jacobian(f, pm, CGAL::parameters::vertex_point_map(vpm));
-    if(j <= 0) ++inverted;
-    worst = (std::min)(worst, j);
-  }
-  return std::make_pair(inverted, worst);
+  return quads_quality(quads.begin(), quads.end(), pm, vpm);
 }
 
 } // namespace internal
