@@ -875,8 +875,16 @@ void test_corpus()
   features.check(m, feature);
 }
 
+// `test_optimizer --same-result-after-undos DATA_DIR` runs test_same_result_after_undos() alone (ctest runs it
+// again under a perturbed heap, see CMakeLists.txt); `test_optimizer [FANDISK]` runs everything.
 int main(int argc, char** argv)
 {
+  if(argc > 2 && std::string(argv[1]) == "--same-result-after-undos")
+  {
+    test_same_result_after_undos(argv[2]);
+    std::cout << "done" << std::endl;
+    return EXIT_SUCCESS;
+  }
   const std::string fandisk = argc > 1 ? argv[1] : "data/pmp_fandisk_quads.off";
   test_subdivision_sphere();
   test_policies();
