@@ -128,6 +128,7 @@ class Batch_optimizer
   std::vector<int> search_from, index_queue;
   unsigned int search_round = 0;
   std::vector<vertex_descriptor> singular;
+  std::size_t singular_of_sign[2] = { 0, 0 }; // how many of them are v3-like (0) and v5-like (1)
   std::vector<vertex_descriptor> edited_vertices; // the scars of the surgeries of the batch (see Scoring_context::begin_batch())
   std::size_t best_pairing_distance = 0; // the smallest pairing distance since the count last decreased
   std::set<Surgery_key> rejected; // end-game surgeries executed and undone, not to be tried again
@@ -158,7 +159,7 @@ public:
   Optimizer_statistics run()
   {
     timer.start();
-    singular = ctx.begin_batch();
+    take_singular(ctx.begin_batch());
     stats.initial_number_of_singularities = stats.number_of_singularities = singular.size();
     stats.initial_number_of_faces = stats.number_of_faces = faces(pm).size();
     stats.pairing_distance = best_pairing_distance = pairing_distance();
@@ -262,9 +263,19 @@ private:
   // ---------------------------------------------------------------------------------------------
   // candidates
 
+  // the singular vertices of the context just refreshed
+  void take_singular(std::vector<vertex_descriptor>&& now)
+  {
+    singular = std::move(now);
+    singular_of_sign[0] = singular_of_sign[1] = 0;
+    for(vertex_descriptor v : singular) ++singular_of_sign[ctx.defect(v) > 0 ? 1 : 0];
+  }
+
   // breadth-first search from s through passable vertices (on the mesh as it was at the start of the
   // batch, by vertex index): the closest singularities of each type that can end a surgery
-  // (`neighbors_per_type` of each), and the border/feature singularities met before.
+  // (`neighbors_per_type` of each), and the border/feature singularities met before. The search stops
+  // once no vertex left could be taken: each type has its partners, or all singularities of that type
+  // were met (a mesh with fewer than `neighbors_per_type` of a type would otherwise be searched whole).
   std::vector<std::vector<vertex_descriptor> > partner_paths(vertex_descriptor s)
   {
     const int is = ctx.index(s);
@@ -280,6 +291,9 @@ private:
     search_from[std::size_t(is)] = is;
     std::size_t n3 = 0, n5 = 0, others = 0;
     const std::size_t k = settings.neighbors_per_type;
+    // the singularities of each type not met yet, s excluded
+    const int ds = ctx.defect_at(is);
+    std::size_t unmet3 = singular_of_sign[0] - (ds < 0 ? 1 : 0), unmet5 = singular_of_sign[1] - (ds > 0 ? 1 : 0);
     std::vector<int> partners;
     for(std::size_t i = 0; i < index_queue.size(); ++i)
     {
@@ -298,7 +312,8 @@ private:
           else if(usable && d > 0 && n5 < k) { ++n5; partners.push_back(v); }
           else if(!usable && others < 2 * k && ((d < 0 && n3 < k) || (d > 0 && n5 < k)))
           { ++others; partners.push_back(v); } // boundary/feature defects
-          if(n3 >= k && n5 >= k) break;
+          --(d < 0 ? unmet3 : unmet5);
+          if((n3 >= k || unmet3 == 0) && (n5 >= k || unmet5 == 0)) break;
         }
       }
       if(!expand) continue;
@@ -910,7 +925,7 @@ private:
 
     if(edited) // else the mesh, the context and the pairing distance are as they were
     {
-      singular = ctx.begin_batch(edited_vertices);
+      take_singular(ctx.begin_batch(edited_vertices));
       stats.pairing_distance = pairing_distance();
     }
     edited_vertices.clear();
@@ -1008,7 +1023,7 @@ private:
       stats.number_of_undone_surgeries += chains.number_of_undos();
       if(chains.number_of_executions() > 0) // undone Q-zips may give new descriptors to re-created vertices
       {
-        singular = ctx.begin_batch(edited_vertices);
+        take_singular(ctx.begin_batch(edited_vertices));
         stats.pairing_distance = pairing_distance();
         stats.number_of_singularities = singular.size();
         stats.number_of_faces = faces(pm).size();
