@@ -74,10 +74,20 @@ private:
   double energy(int q, typename boost::graph_traits<PolygonMesh>::vertex_descriptor at,
                 const Qzip_candidate<PolygonMesh>& c, Context& ctx) const
   {
-    const auto nb = ctx.nearest_singularities(at, c.source, c.target, number_of_neighbors);
+    typedef boost::graph_traits<PolygonMesh> GT;
+    // the first number_of_neighbors of the closest singularities to `at` other than the pair, taken from the
+    // first number_of_neighbors + 2 of them (the context's list of the closest singularities of a vertex is
+    // the same whatever a query excludes): one search around `at` then answers every pair that lands there
+    // (and most of Pairing_term's queries at the same vertex), instead of one search per pair
+    const auto nb = ctx.nearest_singularities(at, GT::null_vertex(), GT::null_vertex(), number_of_neighbors + 2);
     double e = 0;
+    std::size_t used = 0;
     for(const auto& j : nb)
+    {
+      if(j.vertex == c.source || j.vertex == c.target) continue;
+      if(used++ == number_of_neighbors) break;
       e += double(q * charge(j.defect)) / double(j.distance);
+    }
     if(nb.feature_distance > 0 && nb.feature_distance < (std::numeric_limits<int>::max)())
       e += feature_weight / double(nb.feature_distance);
     return e;
