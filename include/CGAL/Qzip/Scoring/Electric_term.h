@@ -78,8 +78,11 @@ private:
     // the first number_of_neighbors of the closest singularities to `at` other than the pair, taken from the
     // first number_of_neighbors + 2 of them (the context's list of the closest singularities of a vertex is
     // the same whatever a query excludes): one search around `at` then answers every pair that lands there
-    // (and most of Pairing_term's queries at the same vertex), instead of one search per pair
-    const auto nb = ctx.nearest_singularities(at, GT::null_vertex(), GT::null_vertex(), number_of_neighbors + 2);
+    // (and most of Pairing_term's queries at the same vertex), instead of one search per pair; when the
+    // context keeps fewer than number_of_neighbors + 2, the query excludes the pair itself
+    const bool wide = number_of_neighbors + 2 <= Context::max_nearest_singularities;
+    const auto nb = wide ? ctx.nearest_singularities(at, GT::null_vertex(), GT::null_vertex(), number_of_neighbors + 2)
+                         : ctx.nearest_singularities(at, c.source, c.target, number_of_neighbors);
     double e = 0;
     std::size_t used = 0;
     for(const auto& j : nb)
