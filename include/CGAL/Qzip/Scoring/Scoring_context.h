@@ -58,7 +58,8 @@ vertex that stops once they are known; the variant that skips two singularities 
 of them stops earlier, and a later question about the same vertex in the batch that needs more of them
 continues that search where it stopped. Both are kept for the batch, and across batches for the vertices
 whose search ball no surgery touched (for the others, those closer than the closest edited vertex).
-`distance_to_separatrix()` is a search within three edges done once per vertex and batch. `distance()` runs bounded breadth-first searches, a few of which are kept.
+`distance_to_separatrix()` is a search within three edges done once per vertex and batch. `distance()`
+runs bounded breadth-first searches, a few of which are kept.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`
 \tparam VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap the property maps of the optimizer
