@@ -910,14 +910,14 @@ void test_resumed_nearest_singularities(const std::string& data_dir)
     else ctx.begin_batch(std::vector<sm_vertex>());
     const std::size_t group = batch == 0 ? 64 : vs.size();
     for(std::size_t first = 0; first < vs.size(); first += group)
-      for(int round = 0; round < 6; ++round)
+      for(int round = 0; round < 7; ++round)
         for(std::size_t j = first; j < (std::min)(first + group, vs.size()); ++j)
         {
           ++asked;
-          if(round == 2 || round == 3)
+          if(round == 3 || round == 4)
           {
             // the closest singularity of the sign opposite to `sign` other than the two closest ones
-            const int sign = round == 2 ? 1 : -1;
+            const int sign = round == 3 ? 1 : -1;
             const sm_vertex x1 = at(j, 0), x2 = at(j, 1);
             Nearby expected{ none, 0, -1 };
             for(const Nearby& s : full[j])
@@ -925,10 +925,11 @@ void test_resumed_nearest_singularities(const std::string& data_dir)
             assert(same(ctx.closest_opposite_singularity(vs[j], sign, x1, x2), expected));
             continue;
           }
-          // the first n singularities other than x1 and x2, with n and the exclusions growing round after round
-          const std::size_t n = round == 0 ? 1 : round == 1 ? 2 : round == 4 ? 4 : Context::max_nearest_singularities;
-          const sm_vertex x1 = round == 1 ? at(j, 0) : round == 4 ? at(j, 1) : none;
-          const sm_vertex x2 = round == 4 ? at(j, 2) : none;
+          // the first n singularities other than x1 and x2, with n and the exclusions growing round after
+          // round (from none at all)
+          const std::size_t n = round < 3 ? std::size_t(round) : round == 5 ? 4 : Context::max_nearest_singularities;
+          const sm_vertex x1 = round == 2 ? at(j, 0) : round == 5 ? at(j, 1) : none;
+          const sm_vertex x2 = round == 5 ? at(j, 2) : none;
           const auto nb = ctx.nearest_singularities(vs[j], x1, x2, n);
           assert(nb.feature_distance == feature_distance[j]);
           std::size_t k = 0;

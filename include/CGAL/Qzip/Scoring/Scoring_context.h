@@ -779,6 +779,7 @@ private:
     unsigned char& count = near_labels.count[std::size_t(i)];
     bool opposite_found = false;
     int radius = (std::max)(0, s.level - 1); // the last level searched
+    bool stopped = false; // at the end of level `radius`, once the labels answered the query
     while(s.begin < near_work_size && count < K && others < n && !opposite_found)
     {
       radius = s.level;
@@ -814,7 +815,7 @@ private:
         near_labels.distance[std::size_t(i) * K + count] = s.level;
         if(j != i && j != x1 && j != x2) ++others;
       }
-      if(last_level) break;
+      if(last_level) { stopped = true; break; }
       s.previous = s.begin;
       s.begin = s.end;
       ++s.level;
@@ -822,7 +823,7 @@ private:
     // else the search stopped with enough, or the ball around i has fewer
     near_complete[std::size_t(i)] = count == K || (others < n && !opposite_found);
     keep_nearest(i, radius);
-    stop_nearest(i);
+    stop_nearest(i, stopped);
   }
 
   // appends the neighbors of u not visited yet in this round to the queue of the search under way. Each
@@ -842,17 +843,18 @@ private:
     near_work_size = size;
   }
 
-  // keeps the search from vertex i that just ended, if it stopped early (if it did not, its labels answer
-  // any query) and the budget allows: the vertices of its last two levels and those of the next level
-  // found so far, all that resume_nearest() needs
-  void stop_nearest(int i) const
+  // keeps the search from vertex i that just ended, if it stopped early with fewer than
+  // max_nearest_singularities labels (else its labels answer any query; a search for no singularity at
+  // all did not start) and the budget allows: the vertices of its last two levels and those of the next
+  // level found so far, all that resume_nearest() needs
+  void stop_nearest(int i, bool stopped) const
   {
     const Near_levels& s = near_levels;
     std::size_t k = std::size_t(near_stopped_at[std::size_t(i)]);
     if(k != 0) near_stopped_size -= near_stopped[k - 1].queue.size(); // out of date: replaced or dropped
     near_stopped_at[std::size_t(i)] = 0;
     const std::size_t size = near_work_size - s.previous;
-    if(near_complete[std::size_t(i)] || near_stopped_size + size > near_stopped_budget()) return;
+    if(!stopped || near_complete[std::size_t(i)] || near_stopped_size + size > near_stopped_budget()) return;
     if(k == 0)
     {
       if(near_stopped_count == near_stopped.size()) near_stopped.emplace_back();
