@@ -747,9 +747,9 @@ private:
   // where enough are known. It gives the same labels as a breadth-first search from all singularities at
   // once, in rank order, in which each vertex keeps the first labels that reach it (a label among the
   // closest of a vertex is among the closest of its predecessor on a shortest path), but it only costs
-  // the ball around i that holds them. A search that stopped early is kept, and continued by a later query
-  // at i in the batch that its labels do not answer (see resume_nearest()): the scoring asks about the
-  // same vertices with other exclusions and signs.
+  // the ball around i that holds them. A search that stopped early is set aside (see stop_nearest()), and
+  // continued by a later query at i in the batch that its labels do not answer (see resume_nearest()): the
+  // scoring asks about the same vertices with other exclusions and signs.
   void compute_nearest(int i, int x1, int x2, std::size_t n, int sign = 0) const
   {
     if(near_known[std::size_t(i)] == epoch && (near_complete[std::size_t(i)] || labels_answer(i, x1, x2, n, sign))) return;
@@ -874,8 +874,8 @@ private:
   // the number of vertices the stopped searches of a batch may hold together
   std::size_t near_stopped_budget() const { return 4 * by_index.size() + 1024; }
 
-  // makes the kept search from vertex i, which stopped at the end of level L, the search under way, ready
-  // to go on with level L + 1; returns the number of the labels of i other than i, x1 and x2. Going on
+  // makes the search from vertex i set aside by stop_nearest(), which stopped at the end of level L, the
+  // search under way, ready to go on with level L + 1; returns the number of the labels of i other than i, x1 and x2. Going on
   // gives the labels a new search would give:
   // - the labels found so far are the same. They are all the singularities within L edges (fewer than
   //   max_nearest_singularities, else the search would be complete), by distance and rank, whatever the
@@ -883,12 +883,12 @@ private:
   //   new search for this query would not stop before the end of level L: it would stop at the first level
   //   whose singularities answer the query, and labels_answer() found that those within L edges do not.
   // - the vertices of level L + 1 are in the same order: a new search finds them by expanding the vertices
-  //   of level L in order; the kept search expanded those before `expanded`, and this expands the others,
-  //   in order.
+  //   of level L in order; the stopped search expanded those before `expanded`, and this expands the
+  //   others, in order.
   // - the vertices marked as visited are those a new search would have marked, as far as the next levels
   //   can see: a neighbor of a vertex at distance d is at distance d - 1, d or d + 1, so the vertices of
   //   level L only meet those of levels L - 1 and on, and those of levels L + 1 and on only those of
-  //   levels L and on, all of which were kept and are marked again.
+  //   levels L and on, all of which were set aside and are marked again.
   // From level L + 1 on, the search then does what a new one does.
   std::size_t resume_nearest(int i, int x1, int x2) const
   {
