@@ -875,6 +875,77 @@ void test_corpus()
   features.check(m, feature);
 }
 
+// the answers of the scoring context at a vertex asked several times in a batch, with other counts,
+// exclusions and signs (a search that stopped early is then continued where it stopped, see
+// Scoring_context::compute_nearest()), are read off the full list of closest singularities that a new
+// context finds by a single search at the vertex. The questions go round after round over groups of
+// vertices: of 64 vertices in a first batch, of all of them in a second one that starts from the closest
+// singularities kept across batches.
+void test_resumed_nearest_singularities(const std::string& data_dir)
+{
+  typedef Q::Scoring_context<Surface_mesh, VPM, ECM, FCM> Context;
+  typedef Context::Nearby Nearby;
+  const sm_vertex none = boost::graph_traits<Surface_mesh>::null_vertex();
+  Surface_mesh m;
+  if(!read_mesh(data_dir + "quadriflow_gargoyle.obj", m)) { std::cerr << "cannot read the gargoyle" << std::endl; assert(false); }
+  const std::vector<sm_vertex> vs(vertices(m).begin(), vertices(m).end());
+  Context fresh(m, get(CGAL::vertex_point, m), ECM(), FCM());
+  fresh.begin_batch();
+  std::vector<std::vector<Nearby> > full;
+  std::vector<int> feature_distance;
+  for(sm_vertex v : vs)
+  {
+    const auto nb = fresh.nearest_singularities(v);
+    full.emplace_back(nb.begin(), nb.end());
+    feature_distance.push_back(nb.feature_distance);
+  }
+  auto same = [](const Nearby& a, const Nearby& b) { return a.vertex == b.vertex && a.defect == b.defect && a.distance == b.distance; };
+  // the k-th singularity of the full list of vertex j, or none
+  auto at = [&](std::size_t j, std::size_t k) { return k < full[j].size() ? full[j][k].vertex : none; };
+  Context ctx(m, get(CGAL::vertex_point, m), ECM(), FCM());
+  std::size_t asked = 0;
+  for(int batch = 0; batch < 2; ++batch)
+  {
+    if(batch == 0) ctx.begin_batch();
+    else ctx.begin_batch(std::vector<sm_vertex>());
+    const std::size_t group = batch == 0 ? 64 : vs.size();
+    for(std::size_t first = 0; first < vs.size(); first += group)
+      for(int round = 0; round < 7; ++round)
+        for(std::size_t j = first; j < (std::min)(first + group, vs.size()); ++j)
+        {
+          ++asked;
+          if(round == 3 || round == 4)
+          {
+            // the closest singularity of the sign opposite to `sign` other than the two closest ones
+            const int sign = round == 3 ? 1 : -1;
+            const sm_vertex x1 = at(j, 0), x2 = at(j, 1);
+            Nearby expected{ none, 0, -1 };
+            for(const Nearby& s : full[j])
+              if(s.vertex != x1 && s.vertex != x2 && s.defect * sign < 0) { expected = s; break; }
+            assert(same(ctx.closest_opposite_singularity(vs[j], sign, x1, x2), expected));
+            continue;
+          }
+          // the first n singularities other than x1 and x2, with n and the exclusions growing round after
+          // round (from none at all)
+          const std::size_t n = round < 3 ? std::size_t(round) : round == 5 ? 4 : Context::max_nearest_singularities;
+          const sm_vertex x1 = round == 2 ? at(j, 0) : round == 5 ? at(j, 1) : none;
+          const sm_vertex x2 = round == 5 ? at(j, 2) : none;
+          const auto nb = ctx.nearest_singularities(vs[j], x1, x2, n);
+          assert(nb.feature_distance == feature_distance[j]);
+          std::size_t k = 0;
+          for(const Nearby& s : full[j])
+          {
+            if(s.vertex == x1 || s.vertex == x2) continue;
+            if(k == n) break;
+            assert(k < nb.size && same(nb.items[k], s));
+            ++k;
+          }
+          assert(k == nb.size);
+        }
+  }
+  std::cout << "resumed closest singularities: " << asked << " questions on " << vs.size() << " vertices" << std::endl;
+}
+
 // `test_optimizer --same-result-after-undos DATA_DIR` runs test_same_result_after_undos() alone (ctest runs it
 // again under a perturbed heap, see CMakeLists.txt); `test_optimizer [FANDISK]` runs everything.
 int main(int argc, char** argv)
@@ -898,6 +969,7 @@ int main(int argc, char** argv)
   test_same_result_after_undos("data/");
   test_context_across_batches<Surface_mesh>();
   test_context_across_batches<Polyhedron>();
+  test_resumed_nearest_singularities("data/");
   test_corpus();
   std::cout << "done" << std::endl;
   return EXIT_SUCCESS;

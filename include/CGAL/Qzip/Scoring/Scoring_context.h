@@ -55,9 +55,11 @@ of every vertex to the border and the features and the separatrices. The closest
 vertex (`nearest_singularities()`, at most `max_nearest_singularities`, ties broken by the position of
 the singularities) are found when first asked for in the batch, by a breadth-first search around the
 vertex that stops once they are known; the variant that skips two singularities and asks for only a few
-of them stops earlier. Both are kept for the batch, and across batches for the vertices whose search
-ball no surgery touched (for the others, those closer than the closest edited vertex). `distance_to_separatrix()` is a search within three edges done once per vertex
-and batch. `distance()` runs bounded breadth-first searches, a few of which are kept.
+of them stops earlier, and a later question about the same vertex in the batch that needs more of them
+continues that search where it stopped. Both are kept for the batch, and across batches for the vertices
+whose search ball no surgery touched (for the others, those closer than the closest edited vertex).
+`distance_to_separatrix()` is a search within three edges done once per vertex and batch. `distance()`
+runs bounded breadth-first searches, a few of which are kept.
 
 \tparam PolygonMesh a model of `MutableFaceGraph`
 \tparam VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap the property maps of the optimizer
@@ -118,6 +120,26 @@ private:
   mutable unsigned int near_round = 0;
   mutable std::vector<int> near_queue;
   mutable std::vector<std::pair<int, int> > near_found;
+  // a search for the closest singularities of a vertex, level by level (see search_nearest()): the last
+  // two levels it went through, by their places in its queue, and how far it expanded the last one
+  struct Near_levels
+  {
+    std::size_t previous = 0, begin = 0, end = 0; // the last two levels: [previous, begin) and [begin, end)
+    std::size_t expanded = 0; // the vertices of the last level from there on were not expanded
+    int level = 0; // the distance of the vertices of the last level
+  };
+  // the search under way: its levels and its queue, the first near_work_size vertices of near_work (which
+  // has room for every vertex and one more, see expand_nearest())
+  mutable Near_levels near_levels;
+  mutable std::vector<int> near_work;
+  mutable std::size_t near_work_size = 0;
+  // the searches of the batch that stopped early, to be continued by a later query at the same vertex
+  // (see resume_nearest()), with only the vertices that continuing needs, and for each vertex 1 + the
+  // index of its search there (0 if none). They hold at most about `near_stopped_budget()` vertices.
+  struct Near_stopped { std::vector<int> queue; Near_levels levels; };
+  mutable std::vector<Near_stopped> near_stopped;
+  mutable std::size_t near_stopped_count = 0, near_stopped_size = 0;
+  mutable std::vector<int> near_stopped_at;
   // the closest singularities kept across batches: a search around a vertex only read the ball of
   // `radius` edges around it, so its answer holds while no vertex of that ball is edited. The vertices
   // and positions of the labels are checked when used: a descriptor may have been recycled, and an undone
@@ -324,6 +346,9 @@ private:
     near_complete.resize(by_index.size());
     near_visit.assign(by_index.size(), 0u);
     near_round = 0;
+    near_stopped_count = near_stopped_size = 0;
+    near_stopped_at.assign(by_index.size(), 0);
+    near_work.resize(by_index.size() + 1);
     // distance to the border and the features
     feature_dist.assign(by_index.size(), (std::numeric_limits<int>::max)());
     std::vector<int> fqueue;
@@ -722,32 +747,50 @@ private:
   // where enough are known. It gives the same labels as a breadth-first search from all singularities at
   // once, in rank order, in which each vertex keeps the first labels that reach it (a label among the
   // closest of a vertex is among the closest of its predecessor on a shortest path), but it only costs
-  // the ball around i that holds them.
+  // the ball around i that holds them. A search that stopped early is set aside (see stop_nearest()), and
+  // continued by a later query at i in the batch that its labels do not answer (see resume_nearest()): the
+  // scoring asks about the same vertices with other exclusions and signs.
   void compute_nearest(int i, int x1, int x2, std::size_t n, int sign = 0) const
   {
-    const std::size_t K = max_nearest_singularities;
     if(near_known[std::size_t(i)] == epoch && (near_complete[std::size_t(i)] || labels_answer(i, x1, x2, n, sign))) return;
     if(near_known[std::size_t(i)] != epoch && restore_nearest(i, x1, x2, n, sign)) return;
     if(++near_round == 0) { std::fill(near_visit.begin(), near_visit.end(), 0u); near_round = 1; }
-    near_known[std::size_t(i)] = epoch;
-    unsigned char& count = near_labels.count[std::size_t(i)];
-    count = 0;
     std::size_t others = 0;
-    bool opposite_found = false;
-    near_queue.assign(1, i);
-    near_visit[std::size_t(i)] = near_round;
-    std::size_t begin = 0;
-    int radius = 0;
-    for(std::size_t level = 0; begin < near_queue.size() && count < K && others < n && !opposite_found; ++level)
+    if(near_stopped_at[std::size_t(i)] != 0) others = resume_nearest(i, x1, x2);
+    else
     {
-      radius = int(level);
-      const std::size_t end = near_queue.size();
+      near_known[std::size_t(i)] = epoch;
+      near_labels.count[std::size_t(i)] = 0;
+      near_work[0] = i;
+      near_work_size = 1;
+      near_visit[std::size_t(i)] = near_round;
+      near_levels = Near_levels();
+    }
+    search_nearest(i, x1, x2, n, sign, others);
+  }
+
+  // the levels of the search from vertex i under way, from near_levels.level on (the vertices of that
+  // level, from near_levels.begin on, are all in the queue and marked), given the number of the labels of
+  // i other than i, x1 and x2; then records the labels (see compute_nearest())
+  void search_nearest(int i, int x1, int x2, std::size_t n, int sign, std::size_t others) const
+  {
+    const std::size_t K = max_nearest_singularities;
+    Near_levels& s = near_levels;
+    unsigned char& count = near_labels.count[std::size_t(i)];
+    bool opposite_found = false;
+    int radius = (std::max)(0, s.level - 1); // the last level searched
+    bool stopped = false; // at the end of level `radius`, once the labels answered the query
+    while(s.begin < near_work_size && count < K && others < n && !opposite_found)
+    {
+      radius = s.level;
+      s.end = near_work_size;
+      s.expanded = s.end;
       near_found.clear();
       std::size_t found_others = 0;
       bool last_level = false; // the labels are known at the end of this level: no need for the next one
-      for(std::size_t q = begin; q < end; ++q)
+      for(std::size_t q = s.begin; q < s.end; ++q)
       {
-        const int u = near_queue[q];
+        const int u = near_work[q];
         if(ranks[std::size_t(u)] >= 0)
         {
           near_found.emplace_back(ranks[std::size_t(u)], u);
@@ -756,29 +799,117 @@ private:
             ++found_others;
             opposite_found = opposite_found || defects[std::size_t(u)] * sign < 0;
           }
-          last_level = count + near_found.size() >= K || others + found_others >= n || opposite_found;
+          if(!last_level && (count + near_found.size() >= K || others + found_others >= n || opposite_found))
+          {
+            last_level = true;
+            s.expanded = q;
+          }
         }
-        if(last_level) continue;
-        for(const int* w = neighbors_begin(u); w != neighbors_end(u); ++w)
-        {
-          if(near_visit[std::size_t(*w)] == near_round) continue;
-          near_visit[std::size_t(*w)] = near_round;
-          near_queue.push_back(*w);
-        }
+        if(!last_level) expand_nearest(u);
       }
       std::sort(near_found.begin(), near_found.end());
       for(std::size_t k = 0; k < near_found.size() && count < K; ++k, ++count)
       {
         const int j = near_found[k].second;
         near_labels.source[std::size_t(i) * K + count] = j;
-        near_labels.distance[std::size_t(i) * K + count] = int(level);
+        near_labels.distance[std::size_t(i) * K + count] = s.level;
         if(j != i && j != x1 && j != x2) ++others;
       }
-      begin = end;
+      if(last_level) { stopped = true; break; }
+      s.previous = s.begin;
+      s.begin = s.end;
+      ++s.level;
     }
     // else the search stopped with enough, or the ball around i has fewer
     near_complete[std::size_t(i)] = count == K || (others < n && !opposite_found);
     keep_nearest(i, radius);
+    stop_nearest(i, stopped);
+  }
+
+  // appends the neighbors of u not visited yet in this round to the queue of the search under way. Each
+  // neighbor is written after the queue, which only grows if it was not visited: no branch to mispredict.
+  void expand_nearest(int u) const
+  {
+    int* queue = near_work.data();
+    unsigned int* visited = near_visit.data();
+    const unsigned int round = near_round;
+    std::size_t size = near_work_size;
+    for(const int *w = neighbors_begin(u), *end = neighbors_end(u); w != end; ++w)
+    {
+      queue[size] = *w;
+      size += visited[std::size_t(*w)] != round ? 1 : 0;
+      visited[std::size_t(*w)] = round;
+    }
+    near_work_size = size;
+  }
+
+  // keeps the search from vertex i that just ended, if it stopped early with fewer than
+  // max_nearest_singularities labels (else its labels answer any query; a search for no singularity at
+  // all did not start) and the budget allows: the vertices of its last two levels and those of the next
+  // level found so far, all that resume_nearest() needs
+  void stop_nearest(int i, bool stopped) const
+  {
+    const Near_levels& s = near_levels;
+    std::size_t k = std::size_t(near_stopped_at[std::size_t(i)]);
+    if(k != 0) near_stopped_size -= near_stopped[k - 1].queue.size(); // out of date: replaced or dropped
+    near_stopped_at[std::size_t(i)] = 0;
+    const std::size_t size = near_work_size - s.previous;
+    if(!stopped || near_complete[std::size_t(i)] || near_stopped_size + size > near_stopped_budget()) return;
+    if(k == 0)
+    {
+      if(near_stopped_count == near_stopped.size()) near_stopped.emplace_back();
+      k = ++near_stopped_count;
+    }
+    Near_stopped& e = near_stopped[k - 1];
+    e.queue.assign(near_work.begin() + std::ptrdiff_t(s.previous), near_work.begin() + std::ptrdiff_t(near_work_size));
+    e.levels.previous = 0;
+    e.levels.begin = s.begin - s.previous;
+    e.levels.end = s.end - s.previous;
+    e.levels.expanded = s.expanded - s.previous;
+    e.levels.level = s.level;
+    near_stopped_size += size;
+    near_stopped_at[std::size_t(i)] = int(k);
+  }
+
+  // the number of vertices the stopped searches of a batch may hold together
+  std::size_t near_stopped_budget() const { return 4 * by_index.size() + 1024; }
+
+  // makes the search from vertex i set aside by stop_nearest(), which stopped at the end of level L, the
+  // search under way, ready to go on with level L + 1; returns the number of the labels of i other than i, x1 and x2. Going on
+  // gives the labels a new search would give:
+  // - the labels found so far are the same. They are all the singularities within L edges (fewer than
+  //   max_nearest_singularities, else the search would be complete), by distance and rank, whatever the
+  //   query: the search stopped at the end of level L, after collecting all of its singularities. And a
+  //   new search for this query would not stop before the end of level L: it would stop at the first level
+  //   whose singularities answer the query, and labels_answer() found that those within L edges do not.
+  // - the vertices of level L + 1 are in the same order: a new search finds them by expanding the vertices
+  //   of level L in order; the stopped search expanded those before `expanded`, and this expands the
+  //   others, in order.
+  // - the vertices marked as visited are those a new search would have marked, as far as the next levels
+  //   can see: a neighbor of a vertex at distance d is at distance d - 1, d or d + 1, so the vertices of
+  //   level L only meet those of levels L - 1 and on, and those of levels L + 1 and on only those of
+  //   levels L and on, all of which were set aside and are marked again.
+  // From level L + 1 on, the search then does what a new one does.
+  std::size_t resume_nearest(int i, int x1, int x2) const
+  {
+    const Near_stopped& e = near_stopped[std::size_t(near_stopped_at[std::size_t(i)]) - 1];
+    std::copy(e.queue.begin(), e.queue.end(), near_work.begin());
+    near_work_size = e.queue.size();
+    for(const int u : e.queue) near_visit[std::size_t(u)] = near_round;
+    Near_levels& s = near_levels;
+    s = e.levels;
+    for(std::size_t q = s.expanded; q < s.end; ++q) expand_nearest(near_work[q]);
+    s.previous = s.begin;
+    s.begin = s.end;
+    ++s.level;
+    const std::size_t K = max_nearest_singularities;
+    std::size_t others = 0;
+    for(std::size_t k = std::size_t(i) * K; k < std::size_t(i) * K + near_labels.count[std::size_t(i)]; ++k)
+    {
+      const int j = near_labels.source[k];
+      if(j != i && j != x1 && j != x2) ++others;
+    }
+    return others;
   }
 
   // records the labels of vertex i, found by a search of `radius` edges, in `kept`
