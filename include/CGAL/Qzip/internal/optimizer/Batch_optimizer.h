@@ -62,8 +62,8 @@ struct Optimizer_settings
   // a batch executes the best half of the candidates it chose (the paper's scheme), or all of them, best
   // first, when the singularities are sparse: at least this many edges, on average, from their partners
   // (Optimizer_statistics::pairing_distance over the number of singularities). Refining a mesh doubles its
-  // distances: Catmull-Clark refinements of a corpus mesh pass 25, the corpus meshes themselves stay below
-  // 20 in every batch.
+  // distances: the corpus meshes stay below 20 in every batch, the gargoyle's Catmull-Clark refinements
+  // start at 10 (CC2), 20 (CC3) and 40 (CC4), and pass 25 as their closest pairs cancel.
   double sparse_pairing_distance = 25;
   bool look_ahead = true;       // chains of Q-zips that bring a singularity onto one of the opposite sign
   int look_ahead_distance = 14; // the two at most this many edges apart
