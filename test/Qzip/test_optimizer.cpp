@@ -523,6 +523,61 @@ void test_same_result_after_undos(const std::string& data_dir)
   }
 }
 
+// ten batches on the Catmull-Clark sphere of level 4 with the given Optimizer_settings::sparse_pairing_distance;
+// checks that each batch executes all its candidates (or the best half, `all` false) and the invariants
+template <typename Mesh>
+Q::Optimizer_statistics run_batches(Mesh& m, double sparse_pairing_distance, bool all)
+{
+  struct Visitor : public Q::Default_optimizer_visitor<Mesh>
+  {
+    bool all = false;
+    std::size_t batches = 0;
+    void on_batch_scored(const Q::Optimizer_statistics& s, std::size_t n)
+    {
+      assert(n == (all ? s.candidates_in_last_batch : (s.candidates_in_last_batch + 1) / 2));
+      ++batches;
+    }
+  } vis;
+  vis.all = all;
+  make_cc_sphere(m, 4);
+  const long chi = euler_characteristic(m);
+  typedef typename CGAL::property_map_selector<Mesh, CGAL::vertex_point_t>::type Vpm;
+  typedef CGAL::Static_boolean_property_map<typename boost::graph_traits<Mesh>::edge_descriptor, false> Ecm;
+  typedef CGAL::Static_boolean_property_map<typename boost::graph_traits<Mesh>::face_descriptor, false> Fcm;
+  Q::internal::Optimizer_settings settings;
+  settings.end_game = false;
+  settings.sparse_pairing_distance = sparse_pairing_distance;
+  const Q::Default_scoring scoring;
+  const Q::Batch_count_stop_predicate stop(10);
+  Q::internal::Batch_optimizer<Mesh, Vpm, Ecm, Fcm, K, Q::Default_scoring, Q::Batch_count_stop_predicate, Visitor>
+    optimizer(m, get(CGAL::vertex_point, m), Ecm(), Fcm(), scoring, stop, vis, settings);
+  const Q::Optimizer_statistics s = optimizer.run();
+  check_result(m, chi, s);
+  assert(vis.batches == s.batch && s.batch == 10);
+  return s;
+}
+
+// sparse singularities: a batch executes all the candidates it chose when the singularities are on average
+// at least `sparse_pairing_distance` edges from their partners, else the best half. Forced both ways
+// (thresholds 0 and infinity) on the Catmull-Clark sphere of level 4 (32 singularities among 3842 vertices):
+// invariants hold, the same result on Surface_mesh and on Polyhedron_3 (run after other work in the process,
+// whose freed addresses Polyhedron_3 reuses), and executing all candidates keeps more surgeries in ten batches.
+void test_all_candidates_when_sparse()
+{
+  Surface_mesh all_sm, half_sm;
+  Polyhedron all_ph;
+  const Q::Optimizer_statistics all = run_batches(all_sm, 0., true);
+  const Q::Optimizer_statistics half = run_batches(half_sm, std::numeric_limits<double>::infinity(), false);
+  const Q::Optimizer_statistics all_p = run_batches(all_ph, 0., true);
+  std::cout << "all candidates when sparse (cc sphere, level 4, 10 batches): " << all.number_of_surgeries << " surgeries, "
+            << all.number_of_singularities << " singularities left (the best half: " << half.number_of_surgeries << ", "
+            << half.number_of_singularities << ")" << std::endl;
+  assert(all_p.number_of_surgeries == all.number_of_surgeries && all_p.number_of_singularities == all.number_of_singularities);
+  assert(are_isomorphic(all_sm, all_ph));
+  assert(sorted_points(all_sm) == sorted_points(all_ph));
+  assert(all.number_of_surgeries > half.number_of_surgeries);
+}
+
 // the first n singularities other than x1 and x2 that the context gives at v (a vertex of a closed mesh),
 // asked right after the scoring's own questions (so maybe answered by labels kept from earlier batches),
 // are at the distances of the first ones a plain breadth-first search finds
@@ -967,6 +1022,7 @@ int main(int argc, char** argv)
   test_protection_and_features(fandisk);
   test_travel();
   test_same_result_after_undos("data/");
+  test_all_candidates_when_sparse();
   test_context_across_batches<Surface_mesh>();
   test_context_across_batches<Polyhedron>();
   test_resumed_nearest_singularities("data/");

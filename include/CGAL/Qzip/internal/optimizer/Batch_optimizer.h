@@ -59,6 +59,12 @@ struct Optimizer_settings
   // a kept Q-zip is followed by more Q-zips of the same pair in the same batch while each end is more than
   // this many edges from the singularity of the opposite sign it is pulled towards (0: never, see follow())
   std::size_t follow_min_distance = 3;
+  // a batch executes the best half of the candidates it chose (the paper's scheme), or all of them, best
+  // first, when the singularities are sparse: at least this many edges, on average, from their partners
+  // (Optimizer_statistics::pairing_distance over the number of singularities). Refining a mesh doubles its
+  // distances: the corpus meshes stay below 20 in every batch, the gargoyle's Catmull-Clark refinements
+  // start at 10 (CC2), 20 (CC3) and 40 (CC4), and pass 25 as their closest pairs cancel.
+  double sparse_pairing_distance = 25;
   bool look_ahead = true;       // chains of Q-zips that bring a singularity onto one of the opposite sign
   int look_ahead_distance = 14; // the two at most this many edges apart
   int look_ahead_depth = 14;    // Q-zips in a chain
@@ -246,6 +252,12 @@ private:
       if(j.defect * d < 0) return true;
     }
     return false;
+  }
+
+  // whether the singularities are far apart (see Optimizer_settings::sparse_pairing_distance)
+  bool is_sparse() const
+  {
+    return !(double(stats.pairing_distance) < settings.sparse_pairing_distance * double(singular.size()));
   }
 
   // see Optimizer_statistics::pairing_distance (on the context, just refreshed)
@@ -881,7 +893,10 @@ private:
     if(!end_game)
     {
       stats.candidates_in_last_batch = chosen.size();
-      chosen.resize((chosen.size() + 1) / 2);
+      // Far apart, the singularities have candidates whose regions rarely meet (a candidate whose region an
+      // earlier surgery of the batch operated on is skipped anyway): the second half moves singularities as
+      // well as the first, and a batch tries all of them.
+      if(!is_sparse()) chosen.resize((chosen.size() + 1) / 2);
     }
     if(!end_game && settings.follow_min_distance > 0) // asked before the mesh changes
       for(Scored& c : chosen)
