@@ -763,6 +763,104 @@ void test_look_ahead()
   assert(with_sum < without_sum && optimum_reached == 5);
 }
 
+// The look-ahead's quality guard judges the quads a chain created or moved against those it removed or moved,
+// not against the whole region of its search: on the genus-3 plate where the batches stop (see
+// test_look_ahead()), the interior vertex farthest from the singularities is pushed across a neighbour (an
+// inverted quad, the worst of every search region). With and without smoothing, the chains kept leave no
+// quad below the quality floor away from the pushed vertex (none was below it before) and no more inverted
+// quads. (When the guard compared the whole region, the inverted quad made its reference negative: chains
+// left quads below the floor.)
+void test_look_ahead_quality_guard()
+{
+  typedef Q::internal::Look_ahead<Surface_mesh, VPM, ECM, FCM, Smoother> Chains;
+  typedef boost::graph_traits<Surface_mesh>::vertex_descriptor Vertex;
+  const double floor = 0.1;
+  std::size_t kept = 0;
+  double worst_kept = 1;
+  for(bool smooth : { false, true })
+  {
+    Surface_mesh m;
+    unsigned int seed = 0;
+    for(; seed < 20; ++seed)
+    {
+      make_genus3_plate(m);
+      Q::optimize_singularities(m, Q::parameters::do_look_ahead(false, CGAL::parameters::random_seed(seed)));
+      if(singularities(m) > 16) break;
+    }
+    assert(seed < 20);
+    // the interior vertex farthest from the singularities (breadth first from all of them)
+    std::map<Vertex, int> distance;
+    std::vector<Vertex> queue;
+    for(Vertex v : vertices(m)) if(degree(v, m) != 4) { distance[v] = 0; queue.push_back(v); }
+    for(std::size_t i = 0; i < queue.size(); ++i)
+      for(Vertex w : vertices_around_target(queue[i], m))
+        if(distance.emplace(w, distance[queue[i]] + 1).second) queue.push_back(w);
+    const Vertex pushed = queue.back();
+    const Vertex neighbour = *vertices_around_target(pushed, m).begin();
+    // the inverted quads, the worst quad without a corner at `at`, and the corners of those with one
+    auto quality_away = [&](const Point& at, std::vector<std::vector<Point> >* around_at = nullptr)
+    {
+      std::size_t inverted = 0;
+      double worst = 1;
+      for(auto f : faces(m))
+      {
+        const double j = Q::quad_scaled_jacobian(f, m);
+        if(j <= 0) ++inverted;
+        std::vector<Point> corners;
+        for(Vertex v : vertices_around_face(halfedge(f, m), m)) corners.push_back(m.point(v));
+        std::sort(corners.begin(), corners.end());
+        if(!std::binary_search(corners.begin(), corners.end(), at)) worst = (std::min)(worst, j);
+        else if(around_at != nullptr) around_at->push_back(corners);
+      }
+      if(around_at != nullptr) std::sort(around_at->begin(), around_at->end());
+      return std::make_pair(inverted, worst);
+    };
+    assert(quality_away(m.point(pushed)).second >= floor && quality_away(m.point(pushed)).first == 0);
+    m.point(pushed) = m.point(pushed) + 1.5 * (m.point(neighbour) - m.point(pushed));
+    const Point at = m.point(pushed);
+    std::vector<std::vector<Point> > pushed_quads;
+    const std::size_t inverted = quality_away(at, &pushed_quads).first;
+    assert(inverted > 0);
+
+    Smoother smoother(m, get(CGAL::vertex_point, m), ECM(), FCM(), true);
+    smoother.quality_floor = floor;
+    Chains::Settings settings;
+    settings.smooth = smooth;
+    settings.quality_floor = floor;
+    Chains chains(m, get(CGAL::vertex_point, m), ECM(), FCM(), smoother, settings);
+    const long f0 = long(faces(m).size());
+    auto within_ten_percent = [&](long change) { return std::abs(double(long(faces(m).size()) + change - f0)) <= 0.1 * double(f0); };
+    for(bool again = true; again; )
+    {
+      again = false;
+      std::vector<Point> sources;
+      for(Vertex v : vertices(m)) if(chains.is_endpoint(v)) sources.push_back(m.point(v));
+      std::sort(sources.begin(), sources.end());
+      for(const Point& p : sources)
+      {
+        Vertex v = boost::graph_traits<Surface_mesh>::null_vertex();
+        for(Vertex w : vertices(m)) if(m.point(w) == p && chains.is_endpoint(w)) v = w;
+        if(v == boost::graph_traits<Surface_mesh>::null_vertex()) continue;
+        Chains::Chain chain;
+        if(!chains.cancel(v, within_ten_percent, chain)) continue;
+        // a chain that changed a quad around the pushed vertex is judged against the inverted quad: the
+        // search stops there
+        std::vector<std::vector<Point> > around_at;
+        const std::pair<std::size_t, double> q = quality_away(at, &around_at);
+        if(around_at != pushed_quads) break;
+        ++kept;
+        worst_kept = (std::min)(worst_kept, q.second);
+        assert(q.first <= inverted && q.second >= floor);
+        again = true;
+        break;
+      }
+    }
+  }
+  std::cout << "look-ahead quality guard: " << kept << " chains kept beside an inverted quad, worst quad away from it "
+            << worst_kept << std::endl;
+  assert(kept > 0);
+}
+
 // The untangling step of the end game's quality guard (Quad_smoother::untangle()): on a flat 4 x 4 grid, two
 // inner vertices pushed across their neighbours (inverted quads) are moved back until every quad is above the
 // floor; the border does not move, nor does a vertex whose quads are all above the floor; the smallest scaled
@@ -1016,6 +1114,7 @@ int main(int argc, char** argv)
   test_policies();
   test_end_game();
   test_look_ahead();
+  test_look_ahead_quality_guard();
   test_untangle();
   test_reference_surface();
   test_feature_sliding(fandisk);

@@ -24,6 +24,8 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
+#include <array>
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -40,7 +42,10 @@ namespace internal {
 // the shortest first; then Q-zips of the pair `a`, `b` itself) that ends with a cancellation: each step
 // must bring `a` closer to its closest singularity of the opposite sign. The first chain found that
 // passes the quality guard of the batches, after smoothing (and untangling, see passes_quality_guard()),
-// is kept; every other one is undone exactly.
+// is kept; every other one is undone exactly. The guard compares the quads the chain created or moved with
+// those it removed or moved (not the whole region of the search: a bad quad far from the chain would
+// lower the reference), so a kept chain leaves no more inverted quads and no quad below the quality floor
+// unless one it replaced was already as bad.
 // Works on the mesh as it is (its own searches, no scoring context).
 template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap,
           typename FaceIsConstrainedMap, typename Smoother>
@@ -120,9 +125,7 @@ public:
     }
     near_chain.clear();
     refused.clear();
-    const std::pair<std::size_t, double> before = quality(state.region);
-    state.inverted_before = before.first;
-    state.min_quality_before = before.second;
+    take_inventory(state.region);
     budget_end = executions + settings.budget;
     judgement_end = judgements + settings.judgements;
     const bool kept = search(a, d, settings.max_depth, history, keeps_face_count, state, chain);
@@ -136,15 +139,41 @@ public:
 
 private:
   // the state of the chain being tried: the touched vertices of its Q-zips known to be alive, its splits
-  // minus its collapses, and the region around it (vertices before it) with the quality of its quads
+  // minus its collapses, and the region around it (vertices before it)
   struct Path_state
   {
     std::vector<vertex_descriptor> region;
     std::vector<int> region_level;        // the distance of each vertex of `region` to `a`
     std::vector<vertex_descriptor> touched;
     long face_change = 0;
-    std::size_t inverted_before = 0;
-    double min_quality_before = 1;
+  };
+
+  // a quad by the positions of its corners, in the order of its halfedges from the smallest one: the same
+  // key before and after a chain if and only if the chain left the quad as it was (its scaled Jacobian
+  // depends only on these positions)
+  typedef std::array<Point, 4> Quad_key;
+  struct Quad_key_hash
+  {
+    std::size_t operator()(const Quad_key& k) const
+    {
+      std::size_t h = 0;
+      for(const Point& p : k)
+      {
+        boost::hash_combine(h, CGAL::to_double(p.x()));
+        boost::hash_combine(h, CGAL::to_double(p.y()));
+        boost::hash_combine(h, CGAL::to_double(p.z()));
+      }
+      return h;
+    }
+  };
+  // a quad of the region before the chain: its scaled Jacobian, how many quads have its key (more than
+  // one only on a degenerate mesh), and how many of them the last check found again
+  struct Quad_before
+  {
+    double quality;
+    std::size_t count = 0;
+    std::size_t found = 0;
+    std::size_t check = 0; // the check (see changed_quads_pass()) that counted `found`
   };
 
   struct Candidate
@@ -312,15 +341,72 @@ private:
     return vertex_ball(seeds, radius, pm, level, [this](vertex_descriptor v) { return reach(v); });
   }
 
-  // the number of inverted quads incident to `region` and the smallest scaled Jacobian among them
-  std::pair<std::size_t, double> quality(const std::vector<vertex_descriptor>& region) const
+  Quad_key quad_key(halfedge_descriptor h) const
   {
-    return region_quality(region, pm, vpm);
+    Quad_key k;
+    for(int i = 0; i < 4; ++i, h = next(h, pm)) k[i] = get(vpm, target(h, pm));
+    std::rotate(k.begin(), std::min_element(k.begin(), k.end()), k.end());
+    return k;
   }
 
-  // smooths the scar of the chain and checks it as a batch checks a surgery (no more inverted quads in
-  // its region, none worse than both the worst one before and the quality floor); if the smoothed scar
-  // fails, untangles it (see Quad_smoother::untangle()) and checks again; restores the positions if not.
+  // the quads incident to `region`, each once
+  std::vector<face_descriptor> quads_around(const std::vector<vertex_descriptor>& region) const
+  {
+    std::vector<face_descriptor> quads;
+    for(vertex_descriptor v : region)
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+        if(!is_border(h, pm) && is_quad(h, pm)) quads.push_back(face(h, pm));
+    std::sort(quads.begin(), quads.end());
+    quads.erase(std::unique(quads.begin(), quads.end()), quads.end());
+    return quads;
+  }
+
+  // records the quads incident to `region` before the chain (see passes_quality_guard())
+  void take_inventory(const std::vector<vertex_descriptor>& region)
+  {
+    quads_before.clear();
+    for(face_descriptor f : quads_around(region))
+    {
+      Quad_before& q = quads_before[quad_key(halfedge(f, pm))];
+      q.quality = quad_scaled_jacobian(f, pm, CGAL::parameters::vertex_point_map(vpm));
+      ++q.count;
+    }
+  }
+
+  // compares the quads incident to `judged` (the region after the chain) with those recorded before it:
+  // the quads that are new or moved must have no more inverted quads among them than the quads that are
+  // gone (removed or moved), and none worse than both the worst one gone and the quality floor: the guard
+  // of the batches (Batch_optimizer::execute()) applied to what the chain changed
+  bool changed_quads_pass(const std::vector<vertex_descriptor>& judged)
+  {
+    std::size_t inverted_new = 0, inverted_gone = 0;
+    double worst_new = 1, worst_gone = 1;
+    for(face_descriptor f : quads_around(judged))
+    {
+      const auto it = quads_before.find(quad_key(halfedge(f, pm)));
+      if(it != quads_before.end() && (it->second.check != checks || it->second.found < it->second.count))
+      {
+        if(it->second.check != checks) { it->second.check = checks; it->second.found = 0; }
+        ++it->second.found;
+        continue;
+      }
+      const double j = quad_scaled_jacobian(f, pm, CGAL::parameters::vertex_point_map(vpm));
+      if(j <= 0) ++inverted_new;
+      worst_new = (std::min)(worst_new, j);
+    }
+    for(const auto& entry : quads_before)
+    {
+      const Quad_before& q = entry.second;
+      if(q.check == checks && q.found == q.count) continue;
+      if(q.quality <= 0) inverted_gone += q.count - (q.check == checks ? q.found : 0);
+      worst_gone = (std::min)(worst_gone, q.quality);
+    }
+    return inverted_new <= inverted_gone && worst_new >= (std::min)(worst_gone, settings.quality_floor);
+  }
+
+  // smooths the scar of the chain and checks it as a batch checks a surgery (see changed_quads_pass());
+  // if the smoothed scar fails, untangles it (see Quad_smoother::untangle()) and checks again; restores
+  // the positions if not.
   // The vertices of the region that no Q-zip of the search came near are alive and unchanged; the
   // others (removed, re-created by an undo, created, or moved) are found from them: the scar is every
   // vertex reached from them without passing one of them, and one edge around. Only live vertices are
@@ -364,12 +450,8 @@ private:
     for(vertex_descriptor v : scar) saved.push_back(get(vpm, v));
     std::vector<vertex_descriptor> judged = changed;
     judged.insert(judged.end(), unchanged.begin(), unchanged.end());
-    auto passes = [&]()
-    {
-      const std::pair<std::size_t, double> after = quality(judged);
-      return after.first <= state.inverted_before &&
-             after.second >= (std::min)(state.min_quality_before, settings.quality_floor);
-    };
+    // each check counts the recorded quads found again anew
+    auto passes = [&]() { ++checks; return changed_quads_pass(judged); };
     if(settings.smooth) smoother.smooth(scar, 3 * settings.smoothing_iterations);
     if(passes() || (settings.smooth && smoother.untangle(scar, untangling_sweeps, settings.quality_floor) > 0 && passes()))
     {
@@ -515,6 +597,10 @@ private:
   // the chains of the current search refused by the quality guard: a hash of the vertices they changed
   // (positions and neighbours' positions, see passes_quality_guard())
   std::unordered_set<std::size_t> refused;
+  // the quads of the region of the current search before its chains, and the checks of chains against them
+  // (see changed_quads_pass())
+  std::size_t checks = 0;
+  std::unordered_map<Quad_key, Quad_before, Quad_key_hash> quads_before;
   static constexpr int untangling_sweeps = 20;
 };
 
