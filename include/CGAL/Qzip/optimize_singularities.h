@@ -62,7 +62,9 @@ v5-like singularities (graph distance through passable vertices; boundary and fe
 way are also tried) are joined by a shortest surgery path, and the four motions of each pair are planned
 (24 candidate surgeries). Every realizable plan is scored from the plan alone (no execution) by the
 scoring functor; each singularity keeps its best improving candidate (and its next three, in order). The
-candidates are sorted and the best half is executed serially, skipping any surgery whose path comes within
+candidates are sorted and the best half is executed serially (all of them, best first, when the
+singularities are sparse: `Optimizer_statistics::pairing_distance` at least 25 times their number, as on
+fine subdivisions), skipping any surgery whose path comes within
 three edges of a path already operated on in this batch (a singularity whose best candidate is skipped
 tries its next ones instead). After each surgery its scar is smoothed (see `smooth_quad_mesh()`); if the
 surgery leaves more inverted quads (scaled Jacobian `<= 0`) near its path than there were, the smoothing
