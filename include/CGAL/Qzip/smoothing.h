@@ -42,8 +42,9 @@ namespace internal {
 // constrained edges that turn by at most `corner_angle`) slide along their feature curve: they move halfway towards
 // the midpoint of their two feature neighbors, projected onto the feature polyline as it was when the
 // smoother was built (surgeries never edit feature edges, so the curves keep their vertices). A move is
-// kept only if no incident quad becomes inverted (scaled Jacobian <= 0) unless it already was, so
-// smoothing never creates an inverted quad.
+// kept if its incident quads stay above the quality floor, or else if the worst of them is no worse than
+// before: so no quad gets inverted (scaled Jacobian <= 0) around a vertex whose quads were not inverted,
+// but beside an inverted quad a move that improves it may invert another (manual, Limitations).
 template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap,
           typename FaceIsConstrainedMap, typename GeomTraits>
 class Quad_smoother
@@ -443,8 +444,10 @@ constrained edges, where the curve turns by at most 45 degrees, moves halfway to
 two feature neighbors and is put back onto the feature polyline as it was before the call, so feature
 curves keep their shape and their edges; feature corners (one, three or more constrained edges, or a
 sharper turn), border vertices and vertices of protected faces do not move (protected regions and the
-border are kept bit for bit). A move that would make an incident quad inverted (scaled Jacobian `<= 0`,
-see `quad_scaled_jacobian()`) is refused, so no quad gets inverted.
+border are kept bit for bit). A move is kept if the incident quads stay valid (scaled Jacobian `> 0`, see
+`quad_scaled_jacobian()`), or else if the smallest of their scaled Jacobians does not decrease: no quad gets
+inverted around a vertex whose quads were all valid, but beside an inverted quad a move that improves it may
+invert another one.
 
 \tparam PolygonMesh a model of `FaceListGraph`
 \tparam VertexRange a range of vertex descriptors of `pm`
