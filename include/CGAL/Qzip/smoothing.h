@@ -21,6 +21,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/property_map.h>
 
+#include <boost/container/small_vector.hpp>
 #include <boost/functional/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 
@@ -224,18 +225,12 @@ public:
   }
 
   // the number of inverted quads around v and the smallest scaled Jacobian among its quads (1 if none)
-  std::pair<int, double> incident_quality(vertex_descriptor v) const
+  std::pair<std::size_t, double> incident_quality(vertex_descriptor v) const
   {
-    int inverted = 0;
-    double m = 1;
+    boost::container::small_vector<face_descriptor, 8> ring;
     for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-    {
-      if(is_border(h, pm) || !is_quad(h, pm)) continue;
-      const double j = quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm));
-      if(j <= 0) ++inverted;
-      m = (std::min)(m, j);
-    }
-    return std::make_pair(inverted, m);
+      if(!is_border(h, pm) && is_quad(h, pm)) ring.push_back(face(h, pm));
+    return quads_quality(ring.begin(), ring.end(), pm, vpm);
   }
 
   // the closest point to p on the reference surface (or `old`, the position of v, if it is closer)
@@ -355,7 +350,7 @@ public:
       for(vertex_descriptor v : region)
       {
         if(is_fixed(v) || sliding_feature(v) != nullptr || stuck.count(v) != 0) continue;
-        const std::pair<int, double> before = incident_quality(v);
+        const std::pair<std::size_t, double> before = incident_quality(v);
         if(before.second >= floor) continue;
         const Point old = get(vpm, v);
         // the parallelogram points (v = a + b - c in the quad (a, v, b, c)), their mean, the quads' normal
@@ -397,7 +392,7 @@ public:
                                    + FT(step * length * std::sin(k * CGAL_PI / 4)) * t2);
         }
         Point best = old;
-        std::pair<int, double> best_quality = before;
+        std::pair<std::size_t, double> best_quality = before;
         // every trial is projected from the triangle of `old` (the trials lie around it), and v keeps the
         // triangle of the position it takes
         const std::size_t old_hint = get(hint, v);
@@ -407,7 +402,7 @@ public:
           put(hint, v, old_hint);
           const Point candidate = project(v, trial, old);
           put(vpm, v, candidate);
-          const std::pair<int, double> q = incident_quality(v);
+          const std::pair<std::size_t, double> q = incident_quality(v);
           if(q.first <= best_quality.first && q.second > best_quality.second)
           {
             best = candidate;

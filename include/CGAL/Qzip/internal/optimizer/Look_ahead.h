@@ -167,13 +167,12 @@ private:
     }
   };
   // a quad of the region before the chain: its scaled Jacobian, how many quads have its key (more than
-  // one only on a degenerate mesh), and how many of them the last check found again
+  // one only on a degenerate mesh), and how many of them the check under way found again (0 between checks)
   struct Quad_before
   {
     double quality;
     std::size_t count = 0;
     std::size_t found = 0;
-    std::size_t check = 0; // the check (see changed_quads_pass()) that counted `found`
   };
 
   struct Candidate
@@ -349,23 +348,11 @@ private:
     return k;
   }
 
-  // the quads incident to `region`, each once
-  std::vector<face_descriptor> quads_around(const std::vector<vertex_descriptor>& region) const
-  {
-    std::vector<face_descriptor> quads;
-    for(vertex_descriptor v : region)
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-        if(!is_border(h, pm) && is_quad(h, pm)) quads.push_back(face(h, pm));
-    std::sort(quads.begin(), quads.end());
-    quads.erase(std::unique(quads.begin(), quads.end()), quads.end());
-    return quads;
-  }
-
   // records the quads incident to `region` before the chain (see passes_quality_guard())
   void take_inventory(const std::vector<vertex_descriptor>& region)
   {
     quads_before.clear();
-    for(face_descriptor f : quads_around(region))
+    for(face_descriptor f : quads_around(region, pm))
     {
       Quad_before& q = quads_before[quad_key(halfedge(f, pm))];
       q.quality = quad_scaled_jacobian(f, pm, CGAL::parameters::vertex_point_map(vpm));
@@ -376,17 +363,17 @@ private:
   // compares the quads incident to `judged` (the region after the chain) with those recorded before it:
   // the quads that are new or moved must have no more inverted quads among them than the quads that are
   // gone (removed or moved), and none worse than both the worst one gone and the quality floor: the guard
-  // of the batches (Batch_optimizer::execute()) applied to what the chain changed
+  // of the batches (Batch_optimizer::execute()) applied to what the chain changed; the counts of the
+  // recorded quads found again go back to 0 for the next check
   bool changed_quads_pass(const std::vector<vertex_descriptor>& judged)
   {
     std::size_t inverted_new = 0, inverted_gone = 0;
     double worst_new = 1, worst_gone = 1;
-    for(face_descriptor f : quads_around(judged))
+    for(face_descriptor f : quads_around(judged, pm))
     {
       const auto it = quads_before.find(quad_key(halfedge(f, pm)));
-      if(it != quads_before.end() && (it->second.check != checks || it->second.found < it->second.count))
+      if(it != quads_before.end() && it->second.found < it->second.count)
       {
-        if(it->second.check != checks) { it->second.check = checks; it->second.found = 0; }
         ++it->second.found;
         continue;
       }
@@ -394,12 +381,15 @@ private:
       if(j <= 0) ++inverted_new;
       worst_new = (std::min)(worst_new, j);
     }
-    for(const auto& entry : quads_before)
+    for(auto& entry : quads_before)
     {
-      const Quad_before& q = entry.second;
-      if(q.check == checks && q.found == q.count) continue;
-      if(q.quality <= 0) inverted_gone += q.count - (q.check == checks ? q.found : 0);
-      worst_gone = (std::min)(worst_gone, q.quality);
+      Quad_before& q = entry.second;
+      if(q.found < q.count)
+      {
+        if(q.quality <= 0) inverted_gone += q.count - q.found;
+        worst_gone = (std::min)(worst_gone, q.quality);
+      }
+      q.found = 0;
     }
     return inverted_new <= inverted_gone && worst_new >= (std::min)(worst_gone, settings.quality_floor);
   }
@@ -450,8 +440,7 @@ private:
     for(vertex_descriptor v : scar) saved.push_back(get(vpm, v));
     std::vector<vertex_descriptor> judged = changed;
     judged.insert(judged.end(), unchanged.begin(), unchanged.end());
-    // each check counts the recorded quads found again anew
-    auto passes = [&]() { ++checks; return changed_quads_pass(judged); };
+    auto passes = [&]() { return changed_quads_pass(judged); };
     if(settings.smooth) smoother.smooth(scar, 3 * settings.smoothing_iterations);
     if(passes() || (settings.smooth && smoother.untangle(scar, untangling_sweeps, settings.quality_floor) > 0 && passes()))
     {
@@ -597,9 +586,7 @@ private:
   // the chains of the current search refused by the quality guard: a hash of the vertices they changed
   // (positions and neighbours' positions, see passes_quality_guard())
   std::unordered_set<std::size_t> refused;
-  // the quads of the region of the current search before its chains, and the checks of chains against them
-  // (see changed_quads_pass())
-  std::size_t checks = 0;
+  // the quads of the region of the current search before its chains (see changed_quads_pass())
   std::unordered_map<Quad_key, Quad_before, Quad_key_hash> quads_before;
   static constexpr int untangling_sweeps = 20;
 };

@@ -53,6 +53,21 @@ vertex_ball(const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_
   return out;
 }
 
+// The quads incident to the vertices of `region`, each once (in the order of their descriptors).
+template <typename PolygonMesh>
+std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>
+quads_around(const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& region, const PolygonMesh& pm)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
+  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> quads;
+  for(const auto v : region)
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      if(!is_border(h, pm) && is_quad(h, pm)) quads.push_back(face(h, pm));
+  std::sort(quads.begin(), quads.end());
+  quads.erase(std::unique(quads.begin(), quads.end()), quads.end());
+  return quads;
+}
+
 // The number of inverted quads (scaled Jacobian <= 0) incident to the vertices of `region`, and the
 // smallest scaled Jacobian among these quads (1 if none): what the optimizer's quality guard compares
 // before and after a surgery.
@@ -61,14 +76,7 @@ std::pair<std::size_t, double>
 region_quality(const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& region,
                const PolygonMesh& pm, const VertexPointMap& vpm)
 {
-  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
-  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
-  std::vector<face_descriptor> quads;
-  for(const auto v : region)
-    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-      if(!is_border(h, pm) && is_quad(h, pm)) quads.push_back(face(h, pm));
-  std::sort(quads.begin(), quads.end());
-  quads.erase(std::unique(quads.begin(), quads.end()), quads.end());
+  const auto quads = quads_around(region, pm);
   return quads_quality(quads.begin(), quads.end(), pm, vpm);
 }
 
