@@ -651,6 +651,41 @@ void make_genus3_plate(Surface_mesh& m)
   Q::preprocess_valences(m);
 }
 
+// the genus-3 plate where the batches and the plain end game stop above the optimum (a v3-v5 pair or more
+// left), for the first such seed (of 20), which it returns
+unsigned int make_plate_where_batches_stop(Surface_mesh& m)
+{
+  unsigned int seed = 0;
+  for(; seed < 20; ++seed)
+  {
+    make_genus3_plate(m);
+    Q::optimize_singularities(m, Q::parameters::do_look_ahead(false, CGAL::parameters::random_seed(seed)));
+    if(singularities(m) > 16) break;
+  }
+  assert(seed < 20);
+  return seed;
+}
+
+// the positions of the vertices that can start a chain of the look-ahead `chains`, sorted (an order that
+// does not depend on descriptors)
+template <typename Chains>
+std::vector<Point> endpoint_positions(const Surface_mesh& m, Chains& chains)
+{
+  std::vector<Point> sources;
+  for(auto v : vertices(m)) if(chains.is_endpoint(v)) sources.push_back(m.point(v));
+  std::sort(sources.begin(), sources.end());
+  return sources;
+}
+
+// the vertex at `p` that can start a chain, or null_vertex() (a chain cancelled or moved it)
+template <typename Chains>
+boost::graph_traits<Surface_mesh>::vertex_descriptor endpoint_at(const Surface_mesh& m, Chains& chains, const Point& p)
+{
+  auto v = boost::graph_traits<Surface_mesh>::null_vertex();
+  for(auto w : vertices(m)) if(m.point(w) == p && chains.is_endpoint(w)) v = w;
+  return v;
+}
+
 // The end game's look-ahead. Directly, on the genus-3 plate where the batches and the plain end game stop
 // (v3 a few edges from v5, no Q-zip predicted to cancel): every chain it keeps lowers the count by exactly
 // two and leaves a valid quad mesh without inverted quads; every search that fails after executing Q-zips
@@ -666,16 +701,7 @@ void test_look_ahead()
   make_genus3_plate(m);
   const long chi = euler_characteristic(m);
   assert(chi == -4);
-  // the first seed whose run without the look-ahead leaves more than the optimum (a v3-v5 pair or more)
-  unsigned int seed = 0;
-  for(; seed < 20; ++seed)
-  {
-    clear(m);
-    make_genus3_plate(m);
-    Q::optimize_singularities(m, Q::parameters::do_look_ahead(false, CGAL::parameters::random_seed(seed)));
-    if(singularities(m) > 16) break;
-  }
-  assert(seed < 20);
+  const unsigned int seed = make_plate_where_batches_stop(m);
   Smoother smoother(m, get(CGAL::vertex_point, m), ECM(), FCM(), true);
   smoother.quality_floor = 0.1;
   Chains::Settings settings;
@@ -690,13 +716,9 @@ void test_look_ahead()
   for(bool again = true; again; )
   {
     again = false;
-    std::vector<Point> sources;
-    for(auto v : vertices(m)) if(chains.is_endpoint(v)) sources.push_back(m.point(v));
-    std::sort(sources.begin(), sources.end());
-    for(const Point& p : sources)
+    for(const Point& p : endpoint_positions(m, chains))
     {
-      auto v = boost::graph_traits<Surface_mesh>::null_vertex();
-      for(auto w : vertices(m)) if(m.point(w) == p && chains.is_endpoint(w)) v = w;
+      const auto v = endpoint_at(m, chains, p);
       if(v == boost::graph_traits<Surface_mesh>::null_vertex()) continue; // cancelled or moved by a chain
       Surface_mesh before;
       copy_mesh(m, before);
@@ -780,14 +802,7 @@ void test_look_ahead_quality_guard()
   for(bool smooth : { false, true })
   {
     Surface_mesh m;
-    unsigned int seed = 0;
-    for(; seed < 20; ++seed)
-    {
-      make_genus3_plate(m);
-      Q::optimize_singularities(m, Q::parameters::do_look_ahead(false, CGAL::parameters::random_seed(seed)));
-      if(singularities(m) > 16) break;
-    }
-    assert(seed < 20);
+    make_plate_where_batches_stop(m);
     // the interior vertex farthest from the singularities (breadth first from all of them)
     std::map<Vertex, int> distance;
     std::vector<Vertex> queue;
@@ -833,13 +848,9 @@ void test_look_ahead_quality_guard()
     for(bool again = true; again; )
     {
       again = false;
-      std::vector<Point> sources;
-      for(Vertex v : vertices(m)) if(chains.is_endpoint(v)) sources.push_back(m.point(v));
-      std::sort(sources.begin(), sources.end());
-      for(const Point& p : sources)
+      for(const Point& p : endpoint_positions(m, chains))
       {
-        Vertex v = boost::graph_traits<Surface_mesh>::null_vertex();
-        for(Vertex w : vertices(m)) if(m.point(w) == p && chains.is_endpoint(w)) v = w;
+        const Vertex v = endpoint_at(m, chains, p);
         if(v == boost::graph_traits<Surface_mesh>::null_vertex()) continue;
         Chains::Chain chain;
         if(!chains.cancel(v, within_ten_percent, chain)) continue;
