@@ -119,13 +119,17 @@ public:
     Qzip_history<PolygonMesh, VertexPointMap> history(pm, vpm);
     Path_state state;
     {
-      std::unordered_set<vertex_descriptor, Vertex_hash> reached;
-      state.region = vertex_ball(std::vector<vertex_descriptor>(1, a), region_radius(), pm, state.region_level,
-                                 [&reached](vertex_descriptor v) { return reached.insert(v).second; });
+      region_level.clear();
+      std::vector<int> level;
+      const std::vector<vertex_descriptor> region =
+        vertex_ball(std::vector<vertex_descriptor>(1, a), region_radius(), pm, level,
+                    [this](vertex_descriptor v) { return region_level.emplace(v, 0).second; });
+      for(std::size_t i = 0; i < region.size(); ++i) region_level[region[i]] = level[i];
     }
     near_chain.clear();
+    quads_before.clear();
+    next_to_chain.clear();
     refused.clear();
-    take_inventory(state.region);
     budget_end = executions + settings.budget;
     judgement_end = judgements + settings.judgements;
     const bool kept = search(a, d, settings.max_depth, history, keeps_face_count, state, chain);
@@ -138,12 +142,10 @@ public:
   }
 
 private:
-  // the state of the chain being tried: the touched vertices of its Q-zips known to be alive, its splits
-  // minus its collapses, and the region around it (vertices before it)
+  // the state of the chain being tried: the touched vertices of its Q-zips known to be alive, and its
+  // splits minus its collapses
   struct Path_state
   {
-    std::vector<vertex_descriptor> region;
-    std::vector<int> region_level;        // the distance of each vertex of `region` to `a`
     std::vector<vertex_descriptor> touched;
     long face_change = 0;
   };
@@ -166,9 +168,15 @@ private:
       return h;
     }
   };
-  // a quad of the region before the chain: its scaled Jacobian, how many quads have its key (more than
-  // one only on a degenerate mesh), and how many of them the check under way found again (0 between checks)
+  // a quad as it was before the search (see near_chain_grows()), by its key, and its scaled Jacobian
   struct Quad_before
+  {
+    Quad_key key;
+    double quality;
+  };
+  // the quads before the search that a check compares with those after it, by key: their scaled Jacobian,
+  // how many have the key (more than one only on a degenerate mesh) and how many of them the check found
+  struct Key_count
   {
     double quality;
     std::size_t count = 0;
@@ -348,31 +356,61 @@ private:
     return k;
   }
 
-  // records the quads incident to `region` before the chain (see passes_quality_guard())
-  void take_inventory(const std::vector<vertex_descriptor>& region)
+  // whether no corner of the quad of h is within three edges of a Q-zip of the search (see near_chain):
+  // the quad is then as it was before the search
+  bool is_intact(halfedge_descriptor h) const
   {
-    quads_before.clear();
-    for(face_descriptor f : quads_around(region, pm))
-    {
-      Quad_before& q = quads_before[quad_key(halfedge(f, pm))];
-      q.quality = quad_scaled_jacobian(f, pm, CGAL::parameters::vertex_point_map(vpm));
-      ++q.count;
-    }
+    for(int i = 0; i < 4; ++i, h = next(h, pm)) if(near_chain.count(target(h, pm)) != 0) return false;
+    return true;
   }
 
-  // compares the quads incident to `judged` (the region after the chain) with those recorded before it:
-  // the quads that are new or moved must have no more inverted quads among them than the quads that are
-  // gone (removed or moved), and none worse than both the worst one gone and the quality floor: the guard
-  // of the batches (Batch_optimizer::execute()) applied to what the chain changed; the counts of the
-  // recorded quads found again go back to 0 for the next check
-  bool changed_quads_pass(const std::vector<vertex_descriptor>& judged)
+  // Before a Q-zip of the search, `near_path` (the vertices within three edges of its path, alive) joins
+  // near_chain. The quads around the vertices that join it, intact until now, are recorded as they are
+  // (quads_before): any quad the search changes is recorded before it changes. Their neighbours outside
+  // near_chain whose distance to `a` is less than region_radius() are where the walk of a check
+  // starts from (see passes_quality_guard()).
+  void near_chain_grows(const std::vector<vertex_descriptor>& near_path)
+  {
+    std::vector<vertex_descriptor> joining;
+    for(vertex_descriptor v : near_path) if(near_chain.count(v) == 0) joining.push_back(v);
+    std::unordered_set<face_descriptor, boost::hash<face_descriptor> > recorded;
+    for(vertex_descriptor v : joining)
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+        if(!is_border(h, pm) && is_quad(h, pm) && is_intact(h) && recorded.insert(face(h, pm)).second)
+          quads_before.push_back(Quad_before{ quad_key(h), quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm)) });
+    near_chain.insert(joining.begin(), joining.end());
+    for(vertex_descriptor v : joining)
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      {
+        const vertex_descriptor w = source(h, pm);
+        if(near_chain.count(w) != 0) continue;
+        const auto it = region_level.find(w);
+        if(it != region_level.end() && it->second < region_radius()) next_to_chain.push_back(w);
+      }
+  }
+
+  // whether v is a vertex of the region that no Q-zip of the search came near (alive, unchanged)
+  bool is_unchanged(vertex_descriptor v) const
+  {
+    return near_chain.count(v) == 0 && region_level.count(v) != 0;
+  }
+
+  // Compares the quads of the region after the chain with those before the search, by their keys: the
+  // quads that are new or moved must have no more inverted quads among them than the quads that are gone
+  // (removed or moved), and none worse than both the worst one gone and the quality floor: the guard of
+  // the batches (Batch_optimizer::execute()) applied to what the chain changed. Only the quads around the
+  // vertices the check smoothed (`scar`, all the changed vertices among them) can differ, and only those
+  // recorded (`before`: quads_before and the intact quads around the scar before it was smoothed) can be
+  // gone; any other quad is the same before and after.
+  bool changed_quads_pass(const std::vector<vertex_descriptor>& scar,
+                          std::unordered_map<Quad_key, Key_count, Quad_key_hash>& before) const
   {
     std::size_t inverted_new = 0, inverted_gone = 0;
     double worst_new = 1, worst_gone = 1;
-    for(face_descriptor f : quads_around(judged, pm))
+    for(face_descriptor f : quads_around(scar, pm))
     {
-      const auto it = quads_before.find(quad_key(halfedge(f, pm)));
-      if(it != quads_before.end() && it->second.found < it->second.count)
+      const auto it = before.find(quad_key(halfedge(f, pm)));
+      if(it != before.end() && it->second.found < it->second.count)
       {
         ++it->second.found;
         continue;
@@ -381,9 +419,9 @@ private:
       if(j <= 0) ++inverted_new;
       worst_new = (std::min)(worst_new, j);
     }
-    for(auto& entry : quads_before)
+    for(auto& entry : before)
     {
-      Quad_before& q = entry.second;
+      Key_count& q = entry.second;
       if(q.found < q.count)
       {
         if(q.quality <= 0) inverted_gone += q.count - q.found;
@@ -405,8 +443,6 @@ private:
   bool passes_quality_guard(const Path_state& state, Chain& chain)
   {
     ++judgements;
-    std::unordered_set<vertex_descriptor, Vertex_hash> unchanged;
-    for(vertex_descriptor v : state.region) if(near_chain.count(v) == 0) unchanged.insert(v);
     std::unordered_set<vertex_descriptor, Vertex_hash> reached;
     std::vector<vertex_descriptor> changed;
     auto reach_changed_neighbours = [&](vertex_descriptor v)
@@ -414,12 +450,12 @@ private:
       for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
       {
         const vertex_descriptor w = source(h, pm);
-        if(unchanged.count(w) == 0 && reached.insert(w).second) changed.push_back(w);
+        if(!is_unchanged(w) && reached.insert(w).second) changed.push_back(w);
       }
     };
-    for(std::size_t i = 0; i < state.region.size(); ++i) // the region's outer shell is never changed
-      if(state.region_level[i] < region_radius() && unchanged.count(state.region[i]) != 0)
-        reach_changed_neighbours(state.region[i]);
+    // the unchanged vertices next to a changed one were next to near_chain when it grew (their rings
+    // are as before), and the region's outer shell is never changed
+    for(vertex_descriptor v : next_to_chain) if(near_chain.count(v) == 0) reach_changed_neighbours(v);
     for(std::size_t i = 0; i < changed.size(); ++i) reach_changed_neighbours(changed[i]);
     // another chain of the search may have left the same mesh (the same Q-zips in another order, or
     // ending the same way after Q-zips that were undone): it was refused, and would be again
@@ -438,9 +474,23 @@ private:
     std::vector<Point> saved;
     saved.reserve(scar.size());
     for(vertex_descriptor v : scar) saved.push_back(get(vpm, v));
-    std::vector<vertex_descriptor> judged = changed;
-    judged.insert(judged.end(), unchanged.begin(), unchanged.end());
-    auto passes = [&]() { return changed_quads_pass(judged); };
+    std::unordered_map<Quad_key, Key_count, Quad_key_hash> before;
+    auto count_before = [&before](const Quad_key& key, double quality)
+    {
+      Key_count& q = before[key];
+      q.quality = quality;
+      ++q.count;
+    };
+    for(const Quad_before& q : quads_before) count_before(q.key, q.quality);
+    {
+      std::unordered_set<face_descriptor, boost::hash<face_descriptor> > counted;
+      for(vertex_descriptor v : scar)
+        if(is_unchanged(v))
+          for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+            if(!is_border(h, pm) && is_quad(h, pm) && is_intact(h) && counted.insert(face(h, pm)).second)
+              count_before(quad_key(h), quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm)));
+    }
+    auto passes = [&]() { return changed_quads_pass(scar, before); };
     if(settings.smooth) smoother.smooth(scar, 3 * settings.smoothing_iterations);
     if(passes() || (settings.smooth && smoother.untangle(scar, untangling_sweeps, settings.quality_floor) > 0 && passes()))
     {
@@ -534,7 +584,7 @@ private:
       const std::vector<vertex_descriptor> near_path = ball(c.plan.path, 3);
       const std::unordered_set<vertex_descriptor, Vertex_hash> endangered(near_path.begin(), near_path.end());
       near_paths.insert(near_path.begin(), near_path.end());
-      near_chain.insert(near_path.begin(), near_path.end());
+      near_chain_grows(near_path);
       const Path_state saved_state = state;
       std::vector<vertex_descriptor> alive;
       for(vertex_descriptor v : state.touched) if(endangered.count(v) == 0) alive.push_back(v);
@@ -583,11 +633,15 @@ private:
   std::size_t executions = 0, undos = 0, budget_end = 0, judgements = 0, judgement_end = 0;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_paths;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_chain; // the part of near_paths of the current search
+  // the distance to `a` of the vertices of the region of the current search (before it), at most region_radius()
+  std::unordered_map<vertex_descriptor, int, Vertex_hash> region_level;
+  // vertices of the region closer than region_radius() to `a` that were next to near_chain when it grew
+  std::vector<vertex_descriptor> next_to_chain;
   // the chains of the current search refused by the quality guard: a hash of the vertices they changed
   // (positions and neighbours' positions, see passes_quality_guard())
   std::unordered_set<std::size_t> refused;
-  // the quads of the region of the current search before its chains (see changed_quads_pass())
-  std::unordered_map<Quad_key, Quad_before, Quad_key_hash> quads_before;
+  // the quads around near_chain before the search changed them (see near_chain_grows())
+  std::vector<Quad_before> quads_before;
   static constexpr int untangling_sweeps = 20;
 };
 
