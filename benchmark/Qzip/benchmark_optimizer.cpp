@@ -97,7 +97,7 @@ struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
   void on_batch_finished(const Q::Optimizer_statistics& s)
   {
     std::cerr << "    batch " << s.batch << ": " << s.number_of_singularities << " singularities, " << s.number_of_faces
-              << " faces, pairing distance " << s.pairing_distance << ", " << s.candidates_in_last_batch << " candidates, " << s.surgeries_in_last_batch << " surgeries (so far " << s.number_of_skipped_surgeries << " skipped, " << s.number_of_undone_surgeries << " undone, " << s.number_of_failed_surgeries << " failed), " << s.elapsed_seconds << " s (scoring "
+              << " faces, pairing distance " << s.pairing_distance << ", " << s.candidates_in_last_batch << " candidates, " << s.surgeries_in_last_batch << " surgeries (so far " << s.number_of_skipped_surgeries << " skipped, " << s.number_of_replanned_surgeries << " replanned, " << s.number_of_undone_surgeries << " undone, " << s.number_of_failed_surgeries << " failed), " << s.elapsed_seconds << " s (scoring "
               << s.scoring_seconds << ", execution " << s.execution_seconds << "), CPU "
               << double(std::clock() - start) / CLOCKS_PER_SEC << " s" << std::endl;
   }

@@ -494,7 +494,7 @@ void test_travel()
 }
 
 // Undone surgeries on two bundled meshes: the same result on Surface_mesh and on Polyhedron_3, run after
-// other work in the process. An undo re-creates vertices with new descriptors, recycled on Surface_mesh
+// other work in the process (plans replanned after undone surgeries included, see test_replanned_after_undos()). An undo re-creates vertices with new descriptors, recycled on Surface_mesh
 // (reset properties) and maybe at the address of a removed vertex on Polyhedron_3 (its stamps, depending on
 // the heap): each must get back the marks and scar stamps of the vertex it replaces, also inside a bend of
 // the path, more than four edges from the region's shell (polylap_suzanne_half met such a vertex).
@@ -514,13 +514,60 @@ void test_same_result_after_undos(const std::string& data_dir)
     const Q::Optimizer_statistics s = Q::optimize_singularities(sm);
     const Q::Optimizer_statistics sp = Q::optimize_singularities(ph);
     std::cout << name << " on both mesh types: " << s.number_of_surgeries << " surgeries, "
-              << s.number_of_undone_surgeries << " undone, " << s.number_of_singularities << " singularities left"
-              << std::endl;
-    assert(s.number_of_undone_surgeries > 0);
+              << s.number_of_undone_surgeries << " undone, " << s.number_of_replanned_surgeries << " replanned, "
+              << s.number_of_singularities << " singularities left" << std::endl;
+    assert(s.number_of_undone_surgeries > 0 && s.number_of_replanned_surgeries > 0);
+    assert(sp.number_of_replanned_surgeries == s.number_of_replanned_surgeries);
     assert(sp.number_of_surgeries == s.number_of_surgeries && sp.number_of_singularities == s.number_of_singularities);
     assert(are_isomorphic(sm, ph));
     assert(sorted_points(sm) == sorted_points(ph));
   }
+}
+
+// A batch plans its candidates on the mesh of its start; a plan whose path meets only the regions of surgeries
+// of the batch that were undone is found again by its positions and planned again instead of skipped (the mesh
+// is the same there, with other descriptors). The first batches on a bundled mesh, with and without: the
+// same candidates; with, some are replanned and executed (more surgeries tried, fewer skipped), and the
+// invariants hold (no more inverted quads than the input's five).
+void test_replanned_after_undos(const std::string& data_dir)
+{
+  struct Visitor : public Q::Default_optimizer_visitor<Surface_mesh>
+  {
+    std::size_t tried = 0;
+    void on_surgery(const Q::Surgery_plan<Surface_mesh>&, double, int) { ++tried; }
+    void on_undo(const Q::Surgery_plan<Surface_mesh>&) { ++tried; }
+  };
+  std::size_t tried[2] = { 0, 0 };
+  Q::Optimizer_statistics stats[2];
+  for(int replan = 0; replan < 2; ++replan)
+  {
+    Surface_mesh m;
+    if(!read_mesh(data_dir + "quadriflow_gargoyle.obj", m)) { std::cerr << "cannot read the gargoyle" << std::endl; assert(false); }
+    Q::preprocess_valences(m);
+    const long chi = euler_characteristic(m);
+    const std::size_t inverted = Q::compute_mesh_report(m).number_of_inverted_quads; // 5 in the input
+    typedef CGAL::Static_boolean_property_map<boost::graph_traits<Surface_mesh>::edge_descriptor, false> Ecm;
+    typedef CGAL::Static_boolean_property_map<boost::graph_traits<Surface_mesh>::face_descriptor, false> Fcm;
+    Q::internal::Optimizer_settings settings;
+    settings.end_game = false;
+    settings.replan_after_undos = replan == 1;
+    const Q::Default_scoring scoring;
+    const Q::Batch_count_stop_predicate stop(3);
+    Visitor vis;
+    typedef CGAL::property_map_selector<Surface_mesh, CGAL::vertex_point_t>::type Vpm;
+    Q::internal::Batch_optimizer<Surface_mesh, Vpm, Ecm, Fcm, K, Q::Default_scoring, Q::Batch_count_stop_predicate, Visitor>
+      optimizer(m, get(CGAL::vertex_point, m), Ecm(), Fcm(), scoring, stop, vis, settings);
+    stats[replan] = optimizer.run();
+    assert(CGAL::is_valid_polygon_mesh(m) && all_faces_have_degree(m, 4) && euler_characteristic(m) == chi);
+    const Q::Mesh_report r = Q::compute_mesh_report(m);
+    assert(r.number_of_inverted_quads <= inverted && r.total_absolute_defect == stats[replan].number_of_singularities);
+    tried[replan] = vis.tried;
+  }
+  std::cout << "replanned after undos (gargoyle, 3 batches): " << stats[1].number_of_replanned_surgeries << " replanned, "
+            << tried[1] << " surgeries tried, " << stats[1].number_of_skipped_surgeries << " skipped (without: "
+            << tried[0] << " tried, " << stats[0].number_of_skipped_surgeries << " skipped)" << std::endl;
+  assert(stats[0].number_of_replanned_surgeries == 0 && stats[1].number_of_replanned_surgeries > 0);
+  assert(tried[1] > tried[0] && stats[1].number_of_skipped_surgeries < stats[0].number_of_skipped_surgeries);
 }
 
 // ten batches on the Catmull-Clark sphere of level 4 with the given Optimizer_settings::sparse_pairing_distance;
@@ -1132,6 +1179,7 @@ int main(int argc, char** argv)
   test_protection_and_features(fandisk);
   test_travel();
   test_same_result_after_undos("data/");
+  test_replanned_after_undos("data/");
   test_all_candidates_when_sparse();
   test_context_across_batches<Surface_mesh>();
   test_context_across_batches<Polyhedron>();

@@ -47,6 +47,9 @@ struct Optimizer_statistics
   std::size_t number_of_undone_surgeries = 0;   ///< Q-zips executed and undone (no valid smoothed shape)
   std::size_t number_of_failed_surgeries = 0;   ///< realizable plans that `execute_qzip()` rolled back
   std::size_t number_of_skipped_surgeries = 0;  ///< chosen plans skipped because their region was already operated on
+  /// chosen plans whose path met only regions of undone (or rolled back) surgeries of the batch, planned
+  /// again there and tried (see `optimize_singularities()`)
+  std::size_t number_of_replanned_surgeries = 0;
   std::size_t end_game_rounds = 0;              ///< rounds of the end game (see `optimize_singularities()`), not counted in `batch`
   double elapsed_seconds = 0;                   ///< wall-clock time since the start of the optimization
   double scoring_seconds = 0;                   ///< part of it spent finding and scoring candidates

@@ -56,6 +56,9 @@ struct Optimizer_settings
   // a source whose best candidate is skipped (its region already operated on in the batch) tries its next
   // best ones, up to this many
   std::size_t alternatives = 3;
+  // a chosen plan whose path meets only regions of surgeries of the batch that were undone is planned
+  // again there (see Batch_optimizer::replan()) instead of skipped
+  bool replan_after_undos = true;
   // a kept Q-zip is followed by more Q-zips of the same pair in the same batch while each end is more than
   // this many edges from the singularity of the opposite sign it is pulled towards (0: never, see follow())
   std::size_t follow_min_distance = 3;
@@ -97,6 +100,7 @@ class Batch_optimizer
     Surgery_key key{}; // in the end game
     std::vector<Scored> alternatives; // in a batch: the next best candidates of the source, tried if this one is skipped
     std::pair<std::size_t, std::size_t> partners{ no_partner, no_partner }; // see watch_partners()
+    std::vector<Point> sketch_points{}; // in a batch: where the vertices of plan.sketch were (see replan())
   };
   static constexpr std::size_t no_partner = std::size_t(-1);
   enum Outcome { KEPT, UNDONE, FAILED, SKIPPED };
@@ -117,6 +121,7 @@ class Batch_optimizer
   CGAL::Real_timer timer;
 
   Stamp_map search_stamp, op_stamp, scar_stamp, outer_stamp;
+  Stamp_map kept_stamp; // batch_epoch: in the region of a surgery kept in this batch (see replan())
   unsigned int search_epoch = 0, batch_epoch = 0, outer_epoch = 0;
   // op_stamp: the number of the surgery whose region first covered the vertex; the surgeries of this
   // batch are numbered from first_in_batch, those of the current pair (see follow()) from first_of_pair
@@ -149,6 +154,7 @@ public:
       op_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       scar_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       outer_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
+      kept_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       partner_id(get(CGAL::dynamic_vertex_property_t<std::size_t>(), pm))
   {
     smoother.quality_floor = settings.quality_floor;
@@ -158,6 +164,7 @@ public:
       put(op_stamp, v, 0u);
       put(scar_stamp, v, 0u);
       put(outer_stamp, v, 0u);
+      put(kept_stamp, v, 0u);
       put(partner_id, v, std::size_t(0));
     }
   }
@@ -414,12 +421,18 @@ private:
     if(improving.empty()) return false;
     std::stable_sort(improving.begin(), improving.end(), [](const Scored& a, const Scored& b) { return a.score < b.score; });
     const std::size_t alternatives = (std::min)(improving.size() - 1, settings.alternatives);
+    auto sketch_points = [this](Scored& c)
+    {
+      for(vertex_descriptor v : c.plan.sketch) c.sketch_points.push_back(get(vpm, v));
+    };
     best = std::move(improving[0]);
     best.source_point = get(vpm, s);
+    sketch_points(best);
     best.alternatives.clear();
     for(std::size_t i = 1; i <= alternatives; ++i)
     {
       improving[i].source_point = best.source_point;
+      sketch_points(improving[i]);
       best.alternatives.push_back(std::move(improving[i]));
     }
     return true;
@@ -544,6 +557,47 @@ private:
     return std::make_pair(true, n);
   }
 
+  // An undone (or rolled back) surgery gives back the mesh it found, up to the descriptors of the vertices
+  // it re-created, so a candidate whose path meets only regions of undone surgeries is still valid there,
+  // with other descriptors: its sketch is found again by the positions it had at the start of the batch,
+  // walking from a vertex of it that no surgery of the batch came near (alive, the same vertex), and
+  // planned again with the same motion. Fails if a vertex is not found, if the new path meets the region
+  // of a surgery kept in this batch (the mesh changed there), or if the new plan differs.
+  template <typename NP>
+  bool replan(const Scored& cand, const NP& plan_np, Surgery_plan<PolygonMesh>& out)
+  {
+    const std::vector<vertex_descriptor>& sketch = cand.plan.sketch;
+    const std::vector<Point>& at = cand.sketch_points;
+    if(at.size() != sketch.size() || sketch.empty()) return false;
+    std::size_t anchor = 0;
+    while(anchor < sketch.size() && operated_on(sketch[anchor])) ++anchor;
+    if(anchor == sketch.size() || get(vpm, sketch[anchor]) != at[anchor]) return false;
+    // the neighbour of v at p (null_vertex() if none, or if two are there)
+    auto neighbour_at = [this](vertex_descriptor v, const Point& p)
+    {
+      vertex_descriptor hit = GT::null_vertex();
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+      {
+        if(get(vpm, source(h, pm)) != p) continue;
+        if(hit != GT::null_vertex()) return GT::null_vertex();
+        hit = source(h, pm);
+      }
+      return hit;
+    };
+    std::vector<vertex_descriptor> found(sketch.size(), GT::null_vertex());
+    found[anchor] = sketch[anchor];
+    for(std::size_t i = anchor + 1; i < sketch.size(); ++i)
+      if((found[i] = neighbour_at(found[i - 1], at[i])) == GT::null_vertex()) return false;
+    for(std::size_t i = anchor; i-- > 0; )
+      if((found[i] = neighbour_at(found[i + 1], at[i])) == GT::null_vertex()) return false;
+    out = plan_qzip(pm, found, cand.plan.initial_operation, plan_np);
+    if(!out.is_realizable() || out.path.size() != cand.plan.path.size() ||
+       out.number_of_collapses() != cand.plan.number_of_collapses() ||
+       out.number_of_splits() != cand.plan.number_of_splits()) return false;
+    for(vertex_descriptor v : out.path) if(get(kept_stamp, v) == batch_epoch) return false;
+    return true;
+  }
+
   // executes the candidate unless its region was already operated on in this batch; keeps it if the
   // smoothed scar has no more inverted quads than before (and, if `require_decrease`, if the number of
   // singularities near its path dropped), else undoes it exactly
@@ -553,15 +607,26 @@ private:
   Outcome execute(const Scored& cand, const NP& exec_np, bool require_decrease, bool follows = false,
                   std::pair<vertex_descriptor, vertex_descriptor>* moved = nullptr)
   {
-    const Surgery_plan<PolygonMesh>& plan = cand.plan;
     ++surgery_serial;
     if(!follows) first_of_pair = surgery_serial;
     // The region of the plan must not have been operated on in this batch. Only the path vertices are
     // read before the check: a vertex removed by an earlier surgery of the batch lies within three edges
     // of its path, which is marked, so no removed vertex is ever walked around. A path at four edges or
     // more from the earlier paths has its one-ring (what its operations touch) disjoint from theirs.
-    for(vertex_descriptor v : plan.path)
-      if(operated_on(v)) { ++stats.number_of_skipped_surgeries; return SKIPPED; }
+    // In a batch, a plan whose path meets only the regions of undone surgeries is planned again there.
+    const Surgery_plan<PolygonMesh>* planned = &cand.plan;
+    Surgery_plan<PolygonMesh> replanned;
+    if(std::any_of(cand.plan.path.begin(), cand.plan.path.end(), [this](vertex_descriptor v) { return operated_on(v); }))
+    {
+      if(require_decrease || follows || !settings.replan_after_undos || !replan(cand, exec_np, replanned))
+      {
+        ++stats.number_of_skipped_surgeries;
+        return SKIPPED;
+      }
+      planned = &replanned;
+      ++stats.number_of_replanned_surgeries;
+    }
+    const Surgery_plan<PolygonMesh>& plan = *planned;
     if(!keeps_face_count(plan)) { ++stats.number_of_skipped_surgeries; return SKIPPED; }
     // read once the path is known to be alive (a skipped plan may name dead vertices), before the ends move
     const Surgery_key surgery_key = require_decrease ? cand.key : key(plan);
@@ -598,9 +663,12 @@ private:
     // the vertices of the region that lie in a scar of this batch, by position: an undo re-creates the
     // removed vertices at the same places, with new descriptors (which may be recycled, with or without
     // their former stamps, depending on the mesh type), and they must be in the scars as before
-    std::vector<std::pair<Point, bool> > in_scar;
-    for(vertex_descriptor v : inner) in_scar.emplace_back(get(vpm, v), get(scar_stamp, v) == batch_epoch);
-    std::sort(in_scar.begin(), in_scar.end(), [](const std::pair<Point, bool>& a, const std::pair<Point, bool>& b)
+    // (and in the region of a surgery kept earlier in the batch, see replan())
+    std::vector<std::pair<Point, std::pair<bool, bool> > > in_scar;
+    for(vertex_descriptor v : inner)
+      in_scar.emplace_back(get(vpm, v), std::make_pair(get(scar_stamp, v) == batch_epoch, get(kept_stamp, v) == batch_epoch));
+    std::sort(in_scar.begin(), in_scar.end(), [](const std::pair<Point, std::pair<bool, bool> >& a,
+                                                 const std::pair<Point, std::pair<bool, bool> >& b)
               { return point_less(a.first, b.first); });
     auto mark_after_undo = [&]()
     {
@@ -615,10 +683,13 @@ private:
       mark(around);
       for(vertex_descriptor v : around)
       {
-        const auto it = std::lower_bound(in_scar.begin(), in_scar.end(), std::make_pair(get(vpm, v), false),
-                                         [](const std::pair<Point, bool>& a, const std::pair<Point, bool>& b)
+        const auto it = std::lower_bound(in_scar.begin(), in_scar.end(), std::make_pair(get(vpm, v), std::make_pair(false, false)),
+                                         [](const std::pair<Point, std::pair<bool, bool> >& a,
+                                            const std::pair<Point, std::pair<bool, bool> >& b)
                                          { return point_less(a.first, b.first); });
-        if(it != in_scar.end() && it->first == get(vpm, v)) put(scar_stamp, v, it->second ? batch_epoch : 0u);
+        if(it == in_scar.end() || it->first != get(vpm, v)) continue;
+        put(scar_stamp, v, it->second.first ? batch_epoch : 0u);
+        put(kept_stamp, v, it->second.second ? batch_epoch : 0u);
       }
     };
 
@@ -669,7 +740,10 @@ private:
     edited_vertices.insert(edited_vertices.end(), scar.begin(), scar.end());
     // new vertices (all touched) may reuse the descriptors of removed ones, with their marks
     for(vertex_descriptor v : r.touched_vertices) put(op_stamp, v, surgery_serial);
-    mark(ball(r.touched_vertices, 2));
+    const std::vector<vertex_descriptor> near_touched = ball(r.touched_vertices, 2);
+    mark(near_touched);
+    for(vertex_descriptor v : inner) put(kept_stamp, v, batch_epoch); // some of them are dead: no walk
+    for(vertex_descriptor v : near_touched) put(kept_stamp, v, batch_epoch);
     stats.number_of_faces = stats.number_of_faces + r.number_of_splits - r.number_of_collapses;
     ++stats.number_of_surgeries;
     ++stats.surgeries_in_last_batch;

@@ -69,7 +69,7 @@ public:
     std::size_t budget = 400;  // Q-zips executed per search, at most
     std::size_t judgements = 32; // chains smoothed and judged by the quality guard per search, at most
     std::size_t partners = 5;  // singularities beyond `b` tried as partner
-    int partner_distance = 12; // at most this many edges beyond `b`
+    int partner_distance = 16; // at most this many edges beyond `b`
     int smoothing_iterations = 5;
     double quality_floor = 0.1;
     bool smooth = true;
