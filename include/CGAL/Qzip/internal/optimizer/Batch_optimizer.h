@@ -613,6 +613,7 @@ private:
       for(vertex_descriptor v : enclosed)
         if(get(search_stamp, v) != search_epoch) around.push_back(v);
       mark(around);
+      ctx.undone_around(around);
       for(vertex_descriptor v : around)
       {
         const auto it = std::lower_bound(in_scar.begin(), in_scar.end(), std::make_pair(get(vpm, v), false),
@@ -1038,6 +1039,7 @@ private:
       stats.number_of_undone_surgeries += chains.number_of_undos();
       if(chains.number_of_executions() > 0) // undone Q-zips may give new descriptors to re-created vertices
       {
+        ctx.rows_changed_elsewhere(); // the chains undone tell no one where they were
         take_singular(ctx.begin_batch(edited_vertices));
         stats.pairing_distance = pairing_distance();
         stats.number_of_singularities = singular.size();
