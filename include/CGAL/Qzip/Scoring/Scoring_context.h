@@ -118,7 +118,9 @@ private:
   std::size_t adjacency_garbage = 0;
   std::vector<int> row_buffer; // a row being rebuilt
   std::vector<int> singular_indices; // the singular vertices, by rank
+  std::size_t cut_count = 0; // the border and feature vertices
   std::vector<int> feature_dist;
+  bool feature_dist_all_max = false; // INT_MAX everywhere (computed without border and feature vertices)
   // what the next begin_batch(edited) must rebuild besides the rows of `edited`: the rows around the
   // surgeries undone since the last batch (see undone_around()), or all of them (rows_known false)
   std::vector<vertex_descriptor> undone_vertices;
@@ -174,9 +176,12 @@ private:
   mutable std::vector<Kept> kept;
   mutable std::vector<std::size_t> kept_free;
   mutable int kept_radius = 0; // the largest radius of a kept search
-  // separatrices: the singularities whose separatrices pass through each vertex (compressed rows), and,
-  // computed when first asked for in a batch, the three closest of them within m_separatrix_radius edges
-  std::vector<int> sep_begin, sep_owner;
+  std::vector<std::size_t> kept_at; // by index, 0 but during begin_batch(edited)
+  // separatrices: the singularities whose separatrices pass through each vertex (rows of sep_owner, from
+  // sep_begin to sep_end, in the order of the seeds), and, computed when first asked for in a batch, the
+  // three closest of them within m_separatrix_radius edges
+  std::vector<int> sep_begin, sep_end, sep_owner;
+  std::vector<int> sep_vertices; // the vertices whose rows are not empty
   mutable Labels sep_near;
   mutable std::vector<unsigned int> sep_near_known; // stamped with the epoch
   mutable std::vector<unsigned int> visit;
@@ -253,20 +258,27 @@ public:
   {
     std::vector<vertex_descriptor> singular = rows_known ? refresh_rows(edited) : refresh(false);
     undone_vertices.clear();
-    // how many kept entries of the vertices of the mesh there are of each radius
+    // the kept entries of the vertices of the mesh, by vertex index (0 elsewhere, and again once done), and
+    // how many there are of each radius
     std::vector<std::size_t> of_radius(std::size_t(kept_radius) + 1, 0);
+    std::vector<int> owners;
     for(std::size_t k = 1; k <= kept.size(); ++k)
-      if(index(kept[k - 1].owner) >= 0 && kept_slot(kept[k - 1].owner) == k) ++of_radius[std::size_t(kept[k - 1].radius)];
+    {
+      const int i = index(kept[k - 1].owner);
+      if(i < 0 || kept_slot(kept[k - 1].owner) != k) continue;
+      kept_at[std::size_t(i)] = k;
+      owners.push_back(i);
+      ++of_radius[std::size_t(kept[k - 1].radius)];
+    }
     // breadth-first from the edited vertices, while an entry not reached yet may have an edited vertex
     // within its radius
     int unreached_radius = kept_radius; // the largest radius of an entry not reached yet (or less)
     auto settle = [&]() { while(unreached_radius >= 0 && of_radius[std::size_t(unreached_radius)] == 0) --unreached_radius; };
     settle();
-    if(unreached_radius < 0) return singular;
     if(++near_round == 0) { std::fill(near_visit.begin(), near_visit.end(), 0u); near_round = 1; }
     near_queue.clear();
     std::vector<int> level;
-    for(vertex_descriptor v : edited)
+    if(unreached_radius >= 0) for(vertex_descriptor v : edited)
     {
       const int i = index(v);
       if(i < 0 || near_visit[std::size_t(i)] == near_round) continue;
@@ -277,7 +289,7 @@ public:
     for(std::size_t q = 0; q < near_queue.size(); ++q)
     {
       const int u = near_queue[std::size_t(q)];
-      const std::size_t k = kept_slot(by_index[std::size_t(u)]);
+      const std::size_t k = kept_at[std::size_t(u)];
       if(k != 0)
       {
         --of_radius[std::size_t(kept[k - 1].radius)];
@@ -293,6 +305,7 @@ public:
         level.push_back(level[q] + 1);
       }
     }
+    for(const int i : owners) kept_at[std::size_t(i)] = 0;
     return singular;
   }
 
@@ -354,6 +367,7 @@ private:
     by_index.clear(); free_indices.clear(); defects.clear(); cut.clear(); passable.clear();
     adjacency_begin.clear(); adjacency_end.clear(); adjacency.clear();
     adjacency_garbage = 0;
+    cut_count = 0;
     rows_known = true;
     // The numbering changes no answer: ties between singularities are broken by their positions, and the
     // neighbors of a vertex are listed in rotation order whatever their numbers. Numbers close to those of
@@ -462,6 +476,7 @@ private:
     adjacency_garbage += std::size_t(valence_at(i));
     adjacency_end[std::size_t(i)] = adjacency_begin[std::size_t(i)];
     defects[std::size_t(i)] = 0;
+    cut_count -= cut[std::size_t(i)];
     cut[std::size_t(i)] = passable[std::size_t(i)] = 0;
     free_indices.push_back(i);
   }
@@ -521,6 +536,7 @@ private:
     }
     alive_in.resize(n, 0u);
     rebuilt_in.resize(n, 0u);
+    kept_at.resize(n, 0);
     // closest singularities: computed when first asked for in the batch (near_known and near_visit are
     // stamped, near_stopped_at is 0 but at the vertices of the stopped searches)
     near_labels.source.resize(n * max_nearest_singularities);
@@ -533,30 +549,44 @@ private:
     near_stopped_count = near_stopped_size = 0;
     near_stopped_at.resize(n, 0);
     near_work.resize(n + 1);
-    // distance to the border and the features
-    feature_dist.assign(n, (std::numeric_limits<int>::max)());
-    std::vector<int> fqueue;
-    for(std::size_t i = 0; i < n; ++i) if(cut[i]) { feature_dist[i] = 0; fqueue.push_back(int(i)); }
-    for(std::size_t i = 0; i < fqueue.size(); ++i)
+    // distance to the border and the features (INT_MAX everywhere on a closed mesh without features, as
+    // in the previous batch if it had none either)
+    if(cut_count == 0 && feature_dist_all_max) feature_dist.resize(n, (std::numeric_limits<int>::max)());
+    else
     {
-      const int d = feature_dist[std::size_t(fqueue[i])];
-      for(const int* w = neighbors_begin(fqueue[i]); w != neighbors_end(fqueue[i]); ++w)
+      feature_dist.assign(n, (std::numeric_limits<int>::max)());
+      std::vector<int> fqueue;
+      for(std::size_t i = 0; i < n; ++i) if(cut[i]) { feature_dist[i] = 0; fqueue.push_back(int(i)); }
+      for(std::size_t i = 0; i < fqueue.size(); ++i)
       {
-        const std::size_t j = std::size_t(*w);
-        if(feature_dist[j] <= d + 1) continue;
-        feature_dist[j] = d + 1;
-        fqueue.push_back(int(j));
+        const int d = feature_dist[std::size_t(fqueue[i])];
+        for(const int* w = neighbors_begin(fqueue[i]); w != neighbors_end(fqueue[i]); ++w)
+        {
+          const std::size_t j = std::size_t(*w);
+          if(feature_dist[j] <= d + 1) continue;
+          feature_dist[j] = d + 1;
+          fqueue.push_back(int(j));
+        }
       }
     }
+    feature_dist_all_max = cut_count == 0;
     // separatrices
     std::vector<std::pair<int, int> > seeds;
     trace_separatrices(singular, seeds);
-    sep_begin.assign(n + 1, 0);
-    for(const auto& so : seeds) ++sep_begin[std::size_t(so.first) + 1];
-    for(std::size_t i = 0; i < n; ++i) sep_begin[i + 1] += sep_begin[i];
+    std::stable_sort(seeds.begin(), seeds.end(), [](const std::pair<int, int>& a, const std::pair<int, int>& b)
+                     { return a.first < b.first; });
+    for(const int i : sep_vertices) sep_end[std::size_t(i)] = sep_begin[std::size_t(i)];
+    sep_begin.resize(n, 0);
+    sep_end.resize(n, 0);
+    sep_vertices.clear();
     sep_owner.resize(seeds.size());
-    std::vector<int> cursor(sep_begin.begin(), sep_begin.end() - 1);
-    for(const auto& so : seeds) sep_owner[std::size_t(cursor[std::size_t(so.first)]++)] = so.second;
+    for(std::size_t k = 0; k < seeds.size(); ++k)
+    {
+      const std::size_t i = std::size_t(seeds[k].first);
+      if(k == 0 || seeds[k - 1].first != seeds[k].first) { sep_vertices.push_back(int(i)); sep_begin[i] = int(k); }
+      sep_end[i] = int(k) + 1;
+      sep_owner[k] = seeds[k].second;
+    }
     sep_near.source.resize(n * 3);
     sep_near.distance.resize(n * 3);
     sep_near.count.resize(n);
@@ -677,6 +707,7 @@ private:
     }
     const int d = c ? internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect : valence - 4;
     defects[std::size_t(i)] = d;
+    cut_count = cut_count + (c ? 1 : 0) - cut[std::size_t(i)];
     cut[std::size_t(i)] = c ? 1 : 0;
     passable[std::size_t(i)] = c || p ? 0 : 1;
     return d != 0;
@@ -1170,7 +1201,7 @@ private:
     for(std::size_t q = 0; q < local_queue.size() && count < 3; ++q)
     {
       const int u = local_queue[q];
-      for(int k = sep_begin[std::size_t(u)]; k < sep_begin[std::size_t(u) + 1] && count < 3; ++k)
+      for(int k = sep_begin[std::size_t(u)]; k < sep_end[std::size_t(u)] && count < 3; ++k)
       {
         const int o = sep_owner[std::size_t(k)];
         bool known = false;
