@@ -50,8 +50,9 @@ What a scoring functor may ask about the mesh while candidates are scored. The o
 refreshes it before each batch; all answers describe the mesh as it was at the start of the batch
 (scoring never edits the mesh). Distances are graph distances in edges.
 
-At the start of each batch the context computes, in time linear in the size of the mesh, the distance
-of every vertex to the border and the features and the separatrices. The closest singularities of a
+At the start of each batch the context updates the neighbors, defects and flags of the vertices the
+previous batch edited (and of their neighbors), the distance of every vertex to the border and the
+features (in time linear in the size of the mesh, unless it has neither) and the separatrices. The closest singularities of a
 vertex (`nearest_singularities()`, at most `max_nearest_singularities`, ties broken by the position of
 the singularities) are found when first asked for in the batch, by a breadth-first search around the
 vertex that stops once they are known; the variant that skips two singularities and asks for only a few
@@ -121,12 +122,17 @@ private:
   std::size_t cut_count = 0; // the border and feature vertices
   std::vector<int> feature_dist;
   bool feature_dist_all_max = false; // INT_MAX everywhere (computed without border and feature vertices)
-  // what the next begin_batch(edited) must rebuild besides the rows of `edited`: the rows around the
-  // surgeries undone since the last batch (see undone_around()), or all of them (rows_known false)
-  std::vector<vertex_descriptor> undone_vertices;
+  // what the next begin_batch(edited) must rebuild (see refresh_rows()), unless rows_known is false (all
+  // rows): the vertices told of by rows_edited() (stamped with the next epoch in `reported`), and the
+  // indices of those told of by may_remove(). The edits are numbered (`edit`): a vertex is alive if it was
+  // named alive (`alive_after`) after an edit at least as late as the last one that may have removed it
+  // (`doubted_in`).
+  std::vector<vertex_descriptor> reported_vertices;
+  std::vector<int> removal_candidates;
   bool rows_known = false;
-  Stamp_map reported; // stamped with the epoch: the vertices whose rows the batch rebuilds
-  std::vector<unsigned int> alive_in, rebuilt_in; // by index, stamped with the epoch (see refresh_rows())
+  Stamp_map reported, doubted_in, alive_after;
+  unsigned int edit = 0;
+  std::vector<unsigned int> rebuilt_in; // by index, stamped with the epoch (see refresh_rows())
   // closest singularities: the rank of each singular vertex in the order of begin_batch() (-1 if regular),
   // and the labels of the vertices asked about in this batch (near_known: stamped with the epoch)
   std::vector<int> ranks;
@@ -212,6 +218,8 @@ public:
       stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       index_map(get(CGAL::dynamic_vertex_property_t<int>(), pm)),
       reported(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
+      doubted_in(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
+      alive_after(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       kept_index(get(CGAL::dynamic_vertex_property_t<std::size_t>(), pm))
   {
     for(std::size_t i = 0; i < 4; ++i)
@@ -221,6 +229,8 @@ public:
     {
       put(stamp, v, 0u);
       put(reported, v, 0u);
+      put(doubted_in, v, 0u);
+      put(alive_after, v, 0u);
       put(kept_index, v, 0);
       for(Slot& sl : slots) put(sl.stamp, v, 0u);
     }
@@ -243,21 +253,18 @@ public:
     kept.clear();
     kept_free.clear();
     kept_radius = 0;
-    undone_vertices.clear();
     return refresh(true);
   }
 
   // same, after a batch that edited (created, moved, or changed the neighbors of) the vertices `edited`
-  // (some of which may have been removed since) and no other vertex, except by surgeries it undid, which
-  // undone_around() told of, or edits that rows_changed_elsewhere() told of. The rows of the vertices
-  // edited, undone around, or created, and those of their neighbors, are rebuilt (see refresh_rows()). The
-  // closest singularities found in earlier batches are kept for the vertices farther from the edited ones
-  // than their search went, and those closer than the edited vertices for the others (see
-  // keep_closer_than()).
+  // (some of which may have been removed since) and no other vertex, except by surgeries it undid. The
+  // edits were told of by may_remove() and rows_edited() (else by rows_changed_elsewhere()): the rows of the
+  // vertices they name are rebuilt (see refresh_rows()). The closest singularities found in earlier
+  // batches are kept for the vertices farther from the edited ones than their search went, and those
+  // closer than the edited vertices for the others (see keep_closer_than()).
   std::vector<vertex_descriptor> begin_batch(const std::vector<vertex_descriptor>& edited)
   {
-    std::vector<vertex_descriptor> singular = rows_known ? refresh_rows(edited) : refresh(false);
-    undone_vertices.clear();
+    std::vector<vertex_descriptor> singular = rows_known ? refresh_rows() : refresh(false);
     // the kept entries of the vertices of the mesh, by vertex index (0 elsewhere, and again once done), and
     // how many there are of each radius
     std::vector<std::size_t> of_radius(std::size_t(kept_radius) + 1, 0);
@@ -309,16 +316,42 @@ public:
     return singular;
   }
 
-  // tells that a surgery was undone (or rolled back) and that the vertices `vs` (alive) hold every vertex
-  // it removed, created or re-created, and their neighbors: their rows are rebuilt at the next
-  // begin_batch(edited). An undo gives back the same mesh (up to descriptors): the closest singularities
-  // kept need not know.
-  void undone_around(const std::vector<vertex_descriptor>& vs)
+  // tells, before an edit, that it removes no vertex but some of `vs` (alive); after it, rows_edited() and
+  // survived() must name those of them still alive
+  void may_remove(const std::vector<vertex_descriptor>& vs)
   {
-    undone_vertices.insert(undone_vertices.end(), vs.begin(), vs.end());
+    ++edit;
+    for(vertex_descriptor v : vs)
+    {
+      put(doubted_in, v, edit);
+      const int i = index(v);
+      if(i >= 0) removal_candidates.push_back(i);
+    }
   }
 
-  // tells that the mesh was edited where no `edited` vertex nor undone_around() says: the next
+  // tells, after the last edit, that the vertices `vs` (alive) may have been created, moved or have other
+  // neighbors (or another halfedge(v)) since the start of the batch, and that no other vertex did but
+  // their neighbors and those named by may_remove(); an undo that gives back the mesh with new descriptors
+  // names those it re-created or walked around. Their rows, and those of their neighbors, are rebuilt at
+  // the next begin_batch(edited).
+  void rows_edited(const std::vector<vertex_descriptor>& vs)
+  {
+    survived(vs);
+    for(vertex_descriptor v : vs)
+    {
+      if(get(reported, v) == epoch + 1) continue;
+      put(reported, v, epoch + 1);
+      reported_vertices.push_back(v);
+    }
+  }
+
+  // tells, after the last edit, that the vertices `vs` are alive
+  void survived(const std::vector<vertex_descriptor>& vs)
+  {
+    for(vertex_descriptor v : vs) put(alive_after, v, edit);
+  }
+
+  // tells that the mesh was edited where neither may_remove() nor rows_edited() said: the next
   // begin_batch(edited) rebuilds every row
   void rows_changed_elsewhere() { rows_known = false; }
 
@@ -368,6 +401,8 @@ private:
     adjacency_begin.clear(); adjacency_end.clear(); adjacency.clear();
     adjacency_garbage = 0;
     cut_count = 0;
+    reported_vertices.clear();
+    removal_candidates.clear();
     rows_known = true;
     // The numbering changes no answer: ties between singularities are broken by their positions, and the
     // neighbors of a vertex are listed in rotation order whatever their numbers. Numbers close to those of
@@ -377,42 +412,41 @@ private:
     return finish_refresh(std::move(singular));
   }
 
-  // the same, after a batch that edited the vertices `edited` (see begin_batch(edited)), in time
-  // proportional to the edits but for a pass over the vertices of the mesh that reads their marks: it
-  // rebuilds the rows (and defects, cut and passable flags) of the vertices edited, undone around or
-  // created, and those of their neighbors before and after, and frees the indices of the vertices removed.
-  // A row only changes with the ring of its vertex, which changes only for the vertices the batch edited
-  // (created ones included) or that an undo re-created or walked around, or with halfedge(v), which an
-  // operation only sets for a vertex next to the vertices it edits. The rows it rebuilds are thus those a
-  // complete rebuild gives, and the others are unchanged. Rebuilds everything (see refresh()) when a
-  // quarter of the vertices or more are to be rebuilt.
-  std::vector<vertex_descriptor> refresh_rows(const std::vector<vertex_descriptor>& edited)
+  // the same, after a batch whose edits were told of by may_remove(), rows_edited() and survived(), in
+  // time proportional to the edits: it frees the indices of the vertices removed (those that may have been
+  // and were not named alive since), and rebuilds the rows (and defects, cut and passable flags) of the
+  // vertices named alive (created ones included), and those of their neighbors before and after. A row
+  // only changes with the ring of its vertex, which changes only for the vertices the batch edited or that
+  // an undo re-created or walked around, or with halfedge(v), which an operation only sets for a vertex
+  // next to the vertices it edits. The rows it rebuilds are thus those a complete rebuild gives, and the
+  // others are unchanged. Rebuilds everything (see refresh()) when a quarter of the vertices or more are to
+  // be rebuilt.
+  std::vector<vertex_descriptor> refresh_rows()
   {
-    ++epoch;
+    ++epoch; // the vertices named by rows_edited() are stamped with it in `reported`
     clear_cache();
-    for(vertex_descriptor v : edited) put(reported, v, epoch); // no walk: some of these may be dead
-    for(vertex_descriptor v : undone_vertices) put(reported, v, epoch);
-    // the live vertices (those not numbered are created; those numbered are alive in `alive_in`), and the
-    // indices of the rows to rebuild (those of the vertices reported)
+    // no walk around these vertices: they may be dead
+    auto is_alive = [this](vertex_descriptor v) { return get(alive_after, v) >= get(doubted_in, v); };
+    for(const int i : removal_candidates)
+    {
+      const vertex_descriptor v = by_index[std::size_t(i)];
+      if(v != GT::null_vertex() && (!is_alive(v) || index(v) != i)) free_index(i);
+    }
+    removal_candidates.clear();
     std::vector<int> rows;
     std::vector<vertex_descriptor> created;
-    std::size_t alive = 0;
-    for(vertex_descriptor v : vertices(pm))
+    for(vertex_descriptor v : reported_vertices)
     {
-      if(halfedge(v, pm) == GT::null_halfedge()) continue;
+      if(get(reported, v) != epoch || !is_alive(v)) continue; // named twice (a recycled descriptor), or removed
+      put(reported, v, 0u);
       const int i = index(v);
-      if(i < 0) { created.push_back(v); continue; }
-      ++alive;
-      alive_in[std::size_t(i)] = epoch;
-      if(get(reported, v) == epoch) rows.push_back(i);
+      if(i < 0) created.push_back(v);
+      else rows.push_back(i);
     }
-    if(4 * (rows.size() + created.size()) >= by_index.size()) return refresh(false);
-    // the numbered vertices not found are removed (or isolated)
-    if(alive < by_index.size() - free_indices.size())
-      for(std::size_t i = 0; i < by_index.size(); ++i)
-        if(by_index[i] != GT::null_vertex() && alive_in[i] != epoch) free_index(int(i));
+    reported_vertices.clear();
+    if(4 * (rows.size() + created.size()) >= by_index.size() - free_indices.size()) return refresh(false);
     for(vertex_descriptor v : created) rows.push_back(take_index(v));
-    // the rows of the reported and created vertices, then those of their neighbors before and after
+    // the rows of the vertices named and created, then those of their neighbors before and after
     const std::size_t reported_rows = rows.size();
     for(const int i : rows) rebuilt_in[std::size_t(i)] = epoch;
     auto add_neighbors = [&](int i)
@@ -454,7 +488,6 @@ private:
       adjacency_begin.push_back(int(adjacency.size()));
       adjacency_end.push_back(int(adjacency.size()));
       ranks.push_back(-1);
-      alive_in.push_back(0u);
       rebuilt_in.push_back(0u);
     }
     else
@@ -534,7 +567,6 @@ private:
       singular_indices.push_back(index(singular[r]));
       ranks[std::size_t(singular_indices.back())] = int(r);
     }
-    alive_in.resize(n, 0u);
     rebuilt_in.resize(n, 0u);
     kept_at.resize(n, 0);
     // closest singularities: computed when first asked for in the batch (near_known and near_visit are

@@ -613,7 +613,7 @@ private:
       for(vertex_descriptor v : enclosed)
         if(get(search_stamp, v) != search_epoch) around.push_back(v);
       mark(around);
-      ctx.undone_around(around);
+      ctx.rows_edited(around);
       for(vertex_descriptor v : around)
       {
         const auto it = std::lower_bound(in_scar.begin(), in_scar.end(), std::make_pair(get(vpm, v), false),
@@ -627,6 +627,7 @@ private:
     for(std::size_t i = 0; i < region.size() && level[i] <= 2; ++i) near_path.push_back(region[i]);
     const std::pair<std::size_t, double> before = quality(near_path);
     Qzip_history<PolygonMesh, VertexPointMap> history(pm, vpm); // this surgery only
+    ctx.may_remove(inner);
     Qzip_result<PolygonMesh> r = execute_qzip(pm, plan, history, exec_np);
     if(!r.is_done())
     {
@@ -668,6 +669,8 @@ private:
     }
     for(vertex_descriptor v : scar) put(scar_stamp, v, batch_epoch);
     edited_vertices.insert(edited_vertices.end(), scar.begin(), scar.end());
+    ctx.rows_edited(scar);
+    ctx.survived(region_within_outer(shell)); // the vertices of `inner` still alive
     // new vertices (all touched) may reuse the descriptors of removed ones, with their marks
     for(vertex_descriptor v : r.touched_vertices) put(op_stamp, v, surgery_serial);
     mark(ball(r.touched_vertices, 2));
