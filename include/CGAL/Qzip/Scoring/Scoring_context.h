@@ -52,13 +52,14 @@ refreshes it before each batch; all answers describe the mesh as it was at the s
 
 At the start of each batch the context updates the neighbors, defects and flags of the vertices the
 previous batch edited (and of their neighbors), the distance of every vertex to the border and the
-features (in time linear in the size of the mesh, unless it has neither) and the separatrices. The closest singularities of a
-vertex (`nearest_singularities()`, at most `max_nearest_singularities`, ties broken by the position of
-the singularities) are found when first asked for in the batch, by a breadth-first search around the
-vertex that stops once they are known; the variant that skips two singularities and asks for only a few
-of them stops earlier, and a later question about the same vertex in the batch that needs more of them
-continues that search where it stopped. Both are kept for the batch, and across batches for the vertices
-whose search ball no surgery touched (for the others, those closer than the closest edited vertex).
+features (in time linear in the size of the mesh, unless it has neither) and the separatrices. The
+closest singularities of a vertex (`nearest_singularities()`, at most `max_nearest_singularities`, ties
+broken by the position of the singularities) are found when first asked for in the batch, by a
+breadth-first search around the vertex that stops once they are known; the variant that skips two
+singularities and asks for only a few of them stops earlier, and a later question about the same vertex
+in the batch that needs more of them continues that search where it stopped. Both are kept for the
+batch, and across batches for the vertices whose search ball no surgery touched (for the others, those
+closer than the closest edited vertex).
 `distance_to_separatrix()` is a search within three edges done once per vertex and batch. `distance()`
 runs bounded breadth-first searches, a few of which are kept.
 
@@ -437,7 +438,7 @@ private:
     std::vector<vertex_descriptor> created;
     for(vertex_descriptor v : reported_vertices)
     {
-      if(get(reported, v) != epoch || !is_alive(v)) continue; // named twice (a recycled descriptor), or removed
+      if(get(reported, v) != epoch || !is_alive(v)) continue; // named twice (recycled), or removed
       put(reported, v, 0u);
       const int i = index(v);
       if(i < 0) created.push_back(v);
