@@ -613,7 +613,7 @@ private:
       for(vertex_descriptor v : enclosed)
         if(get(search_stamp, v) != search_epoch) around.push_back(v);
       mark(around);
-      ctx.rows_edited(around);
+      ctx.rows_edited(enclosed); // the shell and what it encloses: the undo changed no other row
       for(vertex_descriptor v : around)
       {
         const auto it = std::lower_bound(in_scar.begin(), in_scar.end(), std::make_pair(get(vpm, v), false),
