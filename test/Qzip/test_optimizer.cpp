@@ -1157,6 +1157,102 @@ void test_resumed_nearest_singularities(const std::string& data_dir)
   std::cout << "resumed closest singularities: " << asked << " questions on " << vs.size() << " vertices" << std::endl;
 }
 
+// the answers of a scoring context refreshed after a batch (see Scoring_context::begin_batch(edited), which
+// rebuilds the rows of the vertices the batch edited) are those of a new context on the same mesh: at every
+// vertex, its neighbors in the same order, its defect, whether it is passable, its closest singularities,
+// its distance to the features, its closest singularity of each sign and its distance to a separatrix
+// (with and without its two closest singularities excluded)
+template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap, typename FaceIsConstrainedMap>
+void check_same_as_new_context(PolygonMesh& pm,
+                               const Q::Scoring_context<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap>& ctx)
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+  typedef typename GT::vertex_descriptor vertex_descriptor;
+  Q::Scoring_context<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap>
+    fresh(pm, ctx.vertex_point_map(), EdgeIsConstrainedMap(), FaceIsConstrainedMap());
+  fresh.begin_batch();
+  const vertex_descriptor none = GT::null_vertex();
+  auto same = [](const Q::Nearby_singularity<PolygonMesh>& a, const Q::Nearby_singularity<PolygonMesh>& b)
+  { return a.vertex == b.vertex && a.defect == b.defect && a.distance == b.distance; };
+  for(vertex_descriptor v : vertices(pm))
+  {
+    const int i = ctx.index(v), j = fresh.index(v);
+    assert((i < 0) == (j < 0));
+    if(i < 0) continue;
+    assert(ctx.defect(v) == fresh.defect(v) && ctx.is_passable_at(i) == fresh.is_passable_at(j));
+    assert(ctx.valence_at(i) == fresh.valence_at(j));
+    for(int k = 0; k < ctx.valence_at(i); ++k)
+      assert(ctx.vertex(ctx.neighbors_begin(i)[k]) == fresh.vertex(fresh.neighbors_begin(j)[k]));
+    const auto near = ctx.nearest_singularities(v), expected = fresh.nearest_singularities(v);
+    assert(near.feature_distance == expected.feature_distance && near.size == expected.size);
+    for(std::size_t k = 0; k < near.size; ++k) assert(same(near.items[k], expected.items[k]));
+    for(int sign : { -1, 1 })
+      assert(same(ctx.closest_opposite_singularity(v, sign, none, none), fresh.closest_opposite_singularity(v, sign, none, none)));
+    const vertex_descriptor x1 = expected.size > 0 ? expected.items[0].vertex : none;
+    const vertex_descriptor x2 = expected.size > 1 ? expected.items[1].vertex : none;
+    assert(ctx.distance_to_separatrix(v, none, none, 3) == fresh.distance_to_separatrix(v, none, none, 3));
+    assert(ctx.distance_to_separatrix(v, x1, x2, 3) == fresh.distance_to_separatrix(v, x1, x2, 3));
+  }
+}
+
+// the default scoring, which compares the context with a new one (see check_same_as_new_context()) at its
+// first call after the mesh was edited, on the mesh `pm`
+template <typename PolygonMesh>
+struct Fresh_context_scoring
+{
+  PolygonMesh* pm;
+  bool* edited;
+  std::size_t* checks;
+  template <typename Context>
+  double operator()(const Q::Qzip_candidate<PolygonMesh>& c, Context& ctx) const
+  {
+    if(*edited)
+    {
+      check_same_as_new_context(*pm, ctx);
+      *edited = false;
+      ++*checks;
+    }
+    return Q::Default_scoring()(c, ctx);
+  }
+};
+
+// a kept or undone surgery edited the mesh (an undone one gives it back with new descriptors)
+template <typename PolygonMesh>
+struct Edit_visitor : Q::Default_optimizer_visitor<PolygonMesh>
+{
+  bool* edited;
+  void on_surgery(const Q::Surgery_plan<PolygonMesh>&, double, int) { *edited = true; }
+  void on_undo(const Q::Surgery_plan<PolygonMesh>&) { *edited = true; }
+};
+
+// The scoring context, refreshed after each batch (and each round of the end game) by rebuilding only the
+// rows of the vertices edited, undone around or created and those of their neighbors, answers as a new
+// context on the same mesh (see check_same_as_new_context()), on a mesh with a border where surgeries are
+// undone, on Surface_mesh (which recycles the indices of removed vertices with reset properties) and on
+// Polyhedron_3 (run after other work in the process, whose freed addresses it reuses, with their dynamic
+// properties); the checks change no result.
+template <typename Mesh>
+void test_context_refreshed_as_new(const std::string& data_dir)
+{
+  Mesh checked, plain;
+  const std::string name = data_dir + "polylap_suzanne_half.obj";
+  if(!read_mesh(name, checked) || !read_mesh(name, plain)) { std::cerr << "cannot read " << name << std::endl; assert(false); }
+  Q::preprocess_valences(checked);
+  Q::preprocess_valences(plain);
+  bool edited = false;
+  std::size_t checks = 0;
+  Edit_visitor<Mesh> vis;
+  vis.edited = &edited;
+  const auto sc = Q::optimize_singularities(checked, Q::parameters::scoring_functor(Fresh_context_scoring<Mesh>{ &checked, &edited, &checks },
+                    CGAL::parameters::visitor(std::ref(vis))));
+  const auto sp = Q::optimize_singularities(plain);
+  std::cout << "context refreshed as new: " << sc.number_of_surgeries << " surgeries (" << sc.number_of_undone_surgeries
+            << " undone), " << checks << " refreshed contexts checked" << std::endl;
+  assert(sc.number_of_undone_surgeries > 0 && checks > 2);
+  assert(sc.number_of_surgeries == sp.number_of_surgeries && sc.number_of_singularities == sp.number_of_singularities);
+  assert(sorted_points(checked) == sorted_points(plain));
+}
+
 // `test_optimizer --same-result-after-undos DATA_DIR` runs test_same_result_after_undos() alone (ctest runs it
 // again under a perturbed heap, see CMakeLists.txt); `test_optimizer [FANDISK]` runs everything.
 int main(int argc, char** argv)
@@ -1184,6 +1280,8 @@ int main(int argc, char** argv)
   test_context_across_batches<Surface_mesh>();
   test_context_across_batches<Polyhedron>();
   test_resumed_nearest_singularities("data/");
+  test_context_refreshed_as_new<Surface_mesh>("data/");
+  test_context_refreshed_as_new<Polyhedron>("data/");
   test_corpus();
   std::cout << "done" << std::endl;
   return EXIT_SUCCESS;

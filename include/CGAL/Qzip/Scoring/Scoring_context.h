@@ -50,14 +50,16 @@ What a scoring functor may ask about the mesh while candidates are scored. The o
 refreshes it before each batch; all answers describe the mesh as it was at the start of the batch
 (scoring never edits the mesh). Distances are graph distances in edges.
 
-At the start of each batch the context computes, in time linear in the size of the mesh, the distance
-of every vertex to the border and the features and the separatrices. The closest singularities of a
-vertex (`nearest_singularities()`, at most `max_nearest_singularities`, ties broken by the position of
-the singularities) are found when first asked for in the batch, by a breadth-first search around the
-vertex that stops once they are known; the variant that skips two singularities and asks for only a few
-of them stops earlier, and a later question about the same vertex in the batch that needs more of them
-continues that search where it stopped. Both are kept for the batch, and across batches for the vertices
-whose search ball no surgery touched (for the others, those closer than the closest edited vertex).
+At the start of each batch the context updates the neighbors, defects and flags of the vertices the
+previous batch edited (and of their neighbors), the distance of every vertex to the border and the
+features (in time linear in the size of the mesh, unless it has neither) and the separatrices. The
+closest singularities of a vertex (`nearest_singularities()`, at most `max_nearest_singularities`, ties
+broken by the position of the singularities) are found when first asked for in the batch, by a
+breadth-first search around the vertex that stops once they are known; the variant that skips two
+singularities and asks for only a few of them stops earlier, and a later question about the same vertex
+in the batch that needs more of them continues that search where it stopped. Both are kept for the
+batch, and across batches for the vertices whose search ball no surgery touched (for the others, those
+closer than the closest edited vertex).
 `distance_to_separatrix()` is a search within three edges done once per vertex and batch. `distance()`
 runs bounded breadth-first searches, a few of which are kept.
 
@@ -101,16 +103,37 @@ private:
   EdgeIsConstrainedMap ecm;
   FaceIsConstrainedMap fcm;
 
-  // per batch: index of each vertex, its defect, whether it is a border/feature vertex, whether a
-  // surgery path may pass through it, and the neighbors of each vertex by index (compressed rows)
+  // index of each vertex (valid if stamped with `numbering`), its defect, whether it is a border/feature
+  // vertex, whether a surgery path may pass through it, and the neighbors of each vertex by index (rows of
+  // `adjacency`, in rotation order from halfedge(v)). A batch that edited few vertices rebuilds their rows
+  // only (see refresh_rows()): the indices of the removed vertices are free (null in by_index, empty rows)
+  // until created vertices take them, and a rebuilt row that changed size is appended to `adjacency`,
+  // leaving `adjacency_garbage` entries unused.
   Stamp_map stamp;
   Int_map index_map;
-  unsigned int epoch = 0;
+  unsigned int epoch = 0, numbering = 0;
   std::vector<vertex_descriptor> by_index;
+  std::vector<int> free_indices;
   std::vector<int> defects;
   std::vector<unsigned char> cut, passable;
-  std::vector<int> adjacency_begin, adjacency;
+  std::vector<int> adjacency_begin, adjacency_end, adjacency;
+  std::size_t adjacency_garbage = 0;
+  std::vector<int> row_buffer; // a row being rebuilt
+  std::vector<int> singular_indices; // the singular vertices, by rank
+  std::size_t cut_count = 0; // the border and feature vertices
   std::vector<int> feature_dist;
+  bool feature_dist_all_max = false; // INT_MAX everywhere (computed without border and feature vertices)
+  // what the next begin_batch(edited) must rebuild (see refresh_rows()), unless rows_known is false (all
+  // rows): the vertices told of by rows_edited() (stamped with the next epoch in `reported`), and the
+  // indices of those told of by may_remove(). The edits are numbered (`edit`): a vertex is alive if it was
+  // named alive (`alive_after`) after an edit at least as late as the last one that may have removed it
+  // (`doubted_in`).
+  std::vector<vertex_descriptor> reported_vertices;
+  std::vector<int> removal_candidates;
+  bool rows_known = false;
+  Stamp_map reported, doubted_in, alive_after;
+  unsigned int edit = 0;
+  std::vector<unsigned int> rebuilt_in; // by index, stamped with the epoch (see refresh_rows())
   // closest singularities: the rank of each singular vertex in the order of begin_batch() (-1 if regular),
   // and the labels of the vertices asked about in this batch (near_known: stamped with the epoch)
   std::vector<int> ranks;
@@ -136,7 +159,7 @@ private:
   // the searches of the batch that stopped early, to be continued by a later query at the same vertex
   // (see resume_nearest()), with only the vertices that continuing needs, and for each vertex 1 + the
   // index of its search there (0 if none). They hold at most about `near_stopped_budget()` vertices.
-  struct Near_stopped { std::vector<int> queue; Near_levels levels; };
+  struct Near_stopped { int vertex; std::vector<int> queue; Near_levels levels; };
   mutable std::vector<Near_stopped> near_stopped;
   mutable std::size_t near_stopped_count = 0, near_stopped_size = 0;
   mutable std::vector<int> near_stopped_at;
@@ -160,11 +183,14 @@ private:
   mutable std::vector<Kept> kept;
   mutable std::vector<std::size_t> kept_free;
   mutable int kept_radius = 0; // the largest radius of a kept search
-  // separatrices: the singularities whose separatrices pass through each vertex (compressed rows), and,
-  // computed when first asked for in a batch, the three closest of them within m_separatrix_radius edges
-  std::vector<int> sep_begin, sep_owner;
+  std::vector<std::size_t> kept_at; // by index, 0 but during begin_batch(edited)
+  // separatrices: the singularities whose separatrices pass through each vertex (rows of sep_owner, from
+  // sep_begin to sep_end, in the order of the seeds), and, computed when first asked for in a batch, the
+  // three closest of them within m_separatrix_radius edges
+  std::vector<int> sep_begin, sep_end, sep_owner;
+  std::vector<int> sep_vertices; // the vertices whose rows are not empty
   mutable Labels sep_near;
-  mutable std::vector<unsigned char> sep_near_known;
+  mutable std::vector<unsigned int> sep_near_known; // stamped with the epoch
   mutable std::vector<unsigned int> visit;
   mutable unsigned int visit_round = 0;
   mutable std::vector<int> local_queue, local_level;
@@ -192,6 +218,9 @@ public:
     : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm),
       stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       index_map(get(CGAL::dynamic_vertex_property_t<int>(), pm)),
+      reported(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
+      doubted_in(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
+      alive_after(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       kept_index(get(CGAL::dynamic_vertex_property_t<std::size_t>(), pm))
   {
     for(std::size_t i = 0; i < 4; ++i)
@@ -200,6 +229,9 @@ public:
     for(vertex_descriptor v : vertices(pm))
     {
       put(stamp, v, 0u);
+      put(reported, v, 0u);
+      put(doubted_in, v, 0u);
+      put(alive_after, v, 0u);
       put(kept_index, v, 0);
       for(Slot& sl : slots) put(sl.stamp, v, 0u);
     }
@@ -225,21 +257,25 @@ public:
     return refresh(true);
   }
 
-  // same, after a batch that edited (moved, or changed the neighbors of) the vertices `edited` and no
-  // other vertex, except by surgeries it undid: the closest singularities found in earlier batches are
-  // kept for the vertices farther from the edited ones than their search went, and those closer than the
-  // edited vertices for the others (see keep_closer_than()).
+  // same, after a batch that edited (created, moved, or changed the neighbors of) the vertices `edited`
+  // (some of which may have been removed since) and no other vertex, except by surgeries it undid. The
+  // edits were told of by may_remove() and rows_edited() (else by rows_changed_elsewhere()): the rows of the
+  // vertices they name are rebuilt (see refresh_rows()). The closest singularities found in earlier
+  // batches are kept for the vertices farther from the edited ones than their search went, and those
+  // closer than the edited vertices for the others (see keep_closer_than()).
   std::vector<vertex_descriptor> begin_batch(const std::vector<vertex_descriptor>& edited)
   {
-    std::vector<vertex_descriptor> singular = refresh(false);
-    // the kept entries of the vertices of the mesh, by vertex index, and how many there are of each radius
-    std::vector<std::size_t> entry_at(by_index.size(), 0);
+    std::vector<vertex_descriptor> singular = rows_known ? refresh_rows() : refresh(false);
+    // the kept entries of the vertices of the mesh, by vertex index (0 elsewhere, and again once done), and
+    // how many there are of each radius
     std::vector<std::size_t> of_radius(std::size_t(kept_radius) + 1, 0);
+    std::vector<int> owners;
     for(std::size_t k = 1; k <= kept.size(); ++k)
     {
       const int i = index(kept[k - 1].owner);
       if(i < 0 || kept_slot(kept[k - 1].owner) != k) continue;
-      entry_at[std::size_t(i)] = k;
+      kept_at[std::size_t(i)] = k;
+      owners.push_back(i);
       ++of_radius[std::size_t(kept[k - 1].radius)];
     }
     // breadth-first from the edited vertices, while an entry not reached yet may have an edited vertex
@@ -247,11 +283,10 @@ public:
     int unreached_radius = kept_radius; // the largest radius of an entry not reached yet (or less)
     auto settle = [&]() { while(unreached_radius >= 0 && of_radius[std::size_t(unreached_radius)] == 0) --unreached_radius; };
     settle();
-    if(unreached_radius < 0) return singular;
     if(++near_round == 0) { std::fill(near_visit.begin(), near_visit.end(), 0u); near_round = 1; }
     near_queue.clear();
     std::vector<int> level;
-    for(vertex_descriptor v : edited)
+    if(unreached_radius >= 0) for(vertex_descriptor v : edited)
     {
       const int i = index(v);
       if(i < 0 || near_visit[std::size_t(i)] == near_round) continue;
@@ -262,7 +297,7 @@ public:
     for(std::size_t q = 0; q < near_queue.size(); ++q)
     {
       const int u = near_queue[std::size_t(q)];
-      const std::size_t k = entry_at[std::size_t(u)];
+      const std::size_t k = kept_at[std::size_t(u)];
       if(k != 0)
       {
         --of_radius[std::size_t(kept[k - 1].radius)];
@@ -278,8 +313,48 @@ public:
         level.push_back(level[q] + 1);
       }
     }
+    for(const int i : owners) kept_at[std::size_t(i)] = 0;
     return singular;
   }
+
+  // tells, before an edit, that it removes no vertex but some of `vs` (alive); after it, rows_edited() and
+  // survived() must name those of them still alive
+  void may_remove(const std::vector<vertex_descriptor>& vs)
+  {
+    ++edit;
+    for(vertex_descriptor v : vs)
+    {
+      put(doubted_in, v, edit);
+      const int i = index(v);
+      if(i >= 0) removal_candidates.push_back(i);
+    }
+  }
+
+  // tells, after the last edit, that the vertices `vs` (alive) may have been created, moved or have other
+  // neighbors (or another halfedge(v)) since the start of the batch, and that no other vertex did but
+  // their neighbors and those named by may_remove(); an undo that gives back the mesh with new descriptors
+  // names those it re-created or walked around. Their rows, and those of their neighbors, are rebuilt at
+  // the next begin_batch(edited).
+  void rows_edited(const std::vector<vertex_descriptor>& vs)
+  {
+    survived(vs);
+    for(vertex_descriptor v : vs)
+    {
+      if(get(reported, v) == epoch + 1) continue;
+      put(reported, v, epoch + 1);
+      reported_vertices.push_back(v);
+    }
+  }
+
+  // tells, after the last edit, that the vertices `vs` are alive
+  void survived(const std::vector<vertex_descriptor>& vs)
+  {
+    for(vertex_descriptor v : vs) put(alive_after, v, edit);
+  }
+
+  // tells that the mesh was edited where neither may_remove() nor rows_edited() said: the next
+  // begin_batch(edited) rebuilds every row
+  void rows_changed_elsewhere() { rows_known = false; }
 
 private:
   // 1 + the index of the entry of v in `kept`, or 0 if it has none (an entry recycled for another vertex
@@ -321,12 +396,163 @@ private:
   {
     const std::size_t previous_size = by_index.size();
     ++epoch;
+    ++numbering;
     clear_cache();
-    by_index.clear(); defects.clear(); cut.clear(); passable.clear(); adjacency_begin.clear(); adjacency.clear();
+    by_index.clear(); free_indices.clear(); defects.clear(); cut.clear(); passable.clear();
+    adjacency_begin.clear(); adjacency_end.clear(); adjacency.clear();
+    adjacency_garbage = 0;
+    cut_count = 0;
+    reported_vertices.clear();
+    removal_candidates.clear();
+    rows_known = true;
     // The numbering changes no answer: ties between singularities are broken by their positions, and the
     // neighbors of a vertex are listed in rotation order whatever their numbers. Numbers close to those of
     // the neighbors make the searches on the arrays indexed by vertex read entries close to each other.
     std::vector<vertex_descriptor> singular = breadth_first ? number_breadth_first() : number_as_before(previous_size);
+    ranks.assign(by_index.size(), -1);
+    return finish_refresh(std::move(singular));
+  }
+
+  // the same, after a batch whose edits were told of by may_remove(), rows_edited() and survived(), in
+  // time proportional to the edits: it frees the indices of the vertices removed (those that may have been
+  // and were not named alive since), and rebuilds the rows (and defects, cut and passable flags) of the
+  // vertices named alive (created ones included), and those of their neighbors before and after. A row
+  // only changes with the ring of its vertex, which changes only for the vertices the batch edited or that
+  // an undo re-created or walked around, or with halfedge(v), which an operation only sets for a vertex
+  // next to the vertices it edits. The rows it rebuilds are thus those a complete rebuild gives, and the
+  // others are unchanged. Rebuilds everything (see refresh()) when a quarter of the vertices or more are to
+  // be rebuilt.
+  std::vector<vertex_descriptor> refresh_rows()
+  {
+    ++epoch; // the vertices named by rows_edited() are stamped with it in `reported`
+    clear_cache();
+    // no walk around these vertices: they may be dead
+    auto is_alive = [this](vertex_descriptor v) { return get(alive_after, v) >= get(doubted_in, v); };
+    for(const int i : removal_candidates)
+    {
+      const vertex_descriptor v = by_index[std::size_t(i)];
+      if(v != GT::null_vertex() && (!is_alive(v) || index(v) != i)) free_index(i);
+    }
+    removal_candidates.clear();
+    std::vector<int> rows;
+    std::vector<vertex_descriptor> created;
+    for(vertex_descriptor v : reported_vertices)
+    {
+      if(get(reported, v) != epoch || !is_alive(v)) continue; // named twice (recycled), or removed
+      put(reported, v, 0u);
+      const int i = index(v);
+      if(i < 0) created.push_back(v);
+      else rows.push_back(i);
+    }
+    reported_vertices.clear();
+    if(4 * (rows.size() + created.size()) >= by_index.size() - free_indices.size()) return refresh(false);
+    for(vertex_descriptor v : created) rows.push_back(take_index(v));
+    // the rows of the vertices named and created, then those of their neighbors before and after
+    const std::size_t reported_rows = rows.size();
+    for(const int i : rows) rebuilt_in[std::size_t(i)] = epoch;
+    auto add_neighbors = [&](int i)
+    {
+      for(const int* w = neighbors_begin(i); w != neighbors_end(i); ++w)
+      {
+        if(rebuilt_in[std::size_t(*w)] == epoch || by_index[std::size_t(*w)] == GT::null_vertex()) continue;
+        rebuilt_in[std::size_t(*w)] = epoch;
+        rows.push_back(*w);
+      }
+    };
+    for(std::size_t k = 0; k < reported_rows; ++k) add_neighbors(rows[k]); // the rows before
+    for(std::size_t k = 0; k < reported_rows; ++k) rebuild_row(rows[k]);
+    for(std::size_t k = 0; k < reported_rows; ++k) add_neighbors(rows[k]); // the rows after
+    for(std::size_t k = reported_rows; k < rows.size(); ++k) rebuild_row(rows[k]);
+    if(2 * adjacency_garbage > adjacency.size()) compact_adjacency();
+    // the singular vertices: those of the previous batch whose rows were kept, and the rebuilt ones
+    std::vector<vertex_descriptor> singular;
+    for(const int i : singular_indices)
+    {
+      ranks[std::size_t(i)] = -1;
+      if(by_index[std::size_t(i)] != GT::null_vertex() && rebuilt_in[std::size_t(i)] != epoch)
+        singular.push_back(by_index[std::size_t(i)]);
+    }
+    for(const int i : rows) if(defects[std::size_t(i)] != 0) singular.push_back(by_index[std::size_t(i)]);
+    return finish_refresh(std::move(singular));
+  }
+
+  // gives the created vertex v a free index, or a new one; returns it
+  int take_index(vertex_descriptor v)
+  {
+    int i = int(by_index.size());
+    if(free_indices.empty())
+    {
+      by_index.push_back(v);
+      defects.push_back(0);
+      cut.push_back(0);
+      passable.push_back(0);
+      adjacency_begin.push_back(int(adjacency.size()));
+      adjacency_end.push_back(int(adjacency.size()));
+      ranks.push_back(-1);
+      rebuilt_in.push_back(0u);
+    }
+    else
+    {
+      i = free_indices.back();
+      free_indices.pop_back();
+      by_index[std::size_t(i)] = v;
+    }
+    put(stamp, v, numbering);
+    put(index_map, v, i);
+    return i;
+  }
+
+  // frees the index of a vertex removed: its descriptor (which may not be walked around) gets no index
+  void free_index(int i)
+  {
+    put(stamp, by_index[std::size_t(i)], 0u);
+    by_index[std::size_t(i)] = GT::null_vertex();
+    adjacency_garbage += std::size_t(valence_at(i));
+    adjacency_end[std::size_t(i)] = adjacency_begin[std::size_t(i)];
+    defects[std::size_t(i)] = 0;
+    cut_count -= cut[std::size_t(i)];
+    cut[std::size_t(i)] = passable[std::size_t(i)] = 0;
+    free_indices.push_back(i);
+  }
+
+  // builds the row of vertex i again, in place if its size did not change, else at the end of `adjacency`
+  void rebuild_row(int i)
+  {
+    row_buffer.clear();
+    add_row(by_index[std::size_t(i)], i, row_buffer);
+    const std::size_t size = std::size_t(valence_at(i));
+    if(row_buffer.size() != size)
+    {
+      adjacency_garbage += size;
+      adjacency_begin[std::size_t(i)] = int(adjacency.size());
+      adjacency.resize(adjacency.size() + row_buffer.size());
+      adjacency_end[std::size_t(i)] = int(adjacency.size());
+    }
+    std::copy(row_buffer.begin(), row_buffer.end(), adjacency.begin() + adjacency_begin[std::size_t(i)]);
+  }
+
+  // writes the rows again in the order of the indices, without the garbage
+  void compact_adjacency()
+  {
+    std::vector<int> compact;
+    compact.reserve(adjacency.size() - adjacency_garbage);
+    for(std::size_t i = 0; i < by_index.size(); ++i)
+    {
+      const std::size_t begin = compact.size();
+      compact.insert(compact.end(), neighbors_begin(int(i)), neighbors_end(int(i)));
+      adjacency_begin[i] = int(begin);
+      adjacency_end[i] = int(compact.size());
+    }
+    adjacency.swap(compact);
+    adjacency_garbage = 0;
+  }
+
+  // what follows the rows: the singular vertices sorted by position (returned) and their ranks (`ranks`
+  // is -1 elsewhere), the distances to the features, the separatrices, and the arrays of the searches
+  // (empty for this batch)
+  std::vector<vertex_descriptor> finish_refresh(std::vector<vertex_descriptor>&& singular)
+  {
+    const std::size_t n = by_index.size();
     // an order that does not depend on descriptors (the seeds' order breaks ties)
     std::sort(singular.begin(), singular.end(), [this](vertex_descriptor a, vertex_descriptor b)
     {
@@ -336,50 +562,70 @@ private:
       if(pa.y() != pb.y()) return pa.y() < pb.y();
       return pa.z() < pb.z();
     });
-    // closest singularities: computed when first asked for in the batch
-    ranks.assign(by_index.size(), -1);
-    for(std::size_t r = 0; r < singular.size(); ++r) ranks[std::size_t(index(singular[r]))] = int(r);
-    near_labels.source.resize(by_index.size() * max_nearest_singularities);
-    near_labels.distance.resize(by_index.size() * max_nearest_singularities);
-    near_labels.count.resize(by_index.size());
-    near_known.assign(by_index.size(), 0u);
-    near_complete.resize(by_index.size());
-    near_visit.assign(by_index.size(), 0u);
-    near_round = 0;
-    near_stopped_count = near_stopped_size = 0;
-    near_stopped_at.assign(by_index.size(), 0);
-    near_work.resize(by_index.size() + 1);
-    // distance to the border and the features
-    feature_dist.assign(by_index.size(), (std::numeric_limits<int>::max)());
-    std::vector<int> fqueue;
-    for(std::size_t i = 0; i < by_index.size(); ++i) if(cut[i]) { feature_dist[i] = 0; fqueue.push_back(int(i)); }
-    for(std::size_t i = 0; i < fqueue.size(); ++i)
+    singular_indices.clear();
+    for(std::size_t r = 0; r < singular.size(); ++r)
     {
-      const int d = feature_dist[std::size_t(fqueue[i])];
-      for(int k = adjacency_begin[std::size_t(fqueue[i])]; k < adjacency_begin[std::size_t(fqueue[i]) + 1]; ++k)
+      singular_indices.push_back(index(singular[r]));
+      ranks[std::size_t(singular_indices.back())] = int(r);
+    }
+    rebuilt_in.resize(n, 0u);
+    kept_at.resize(n, 0);
+    // closest singularities: computed when first asked for in the batch (near_known and near_visit are
+    // stamped, near_stopped_at is 0 but at the vertices of the stopped searches)
+    near_labels.source.resize(n * max_nearest_singularities);
+    near_labels.distance.resize(n * max_nearest_singularities);
+    near_labels.count.resize(n);
+    near_known.resize(n, 0u);
+    near_complete.resize(n);
+    near_visit.resize(n, 0u);
+    for(std::size_t k = 0; k < near_stopped_count; ++k) near_stopped_at[std::size_t(near_stopped[k].vertex)] = 0;
+    near_stopped_count = near_stopped_size = 0;
+    near_stopped_at.resize(n, 0);
+    near_work.resize(n + 1);
+    // distance to the border and the features (INT_MAX everywhere on a closed mesh without features, as
+    // in the previous batch if it had none either)
+    if(cut_count == 0 && feature_dist_all_max) feature_dist.resize(n, (std::numeric_limits<int>::max)());
+    else
+    {
+      feature_dist.assign(n, (std::numeric_limits<int>::max)());
+      std::vector<int> fqueue;
+      for(std::size_t i = 0; i < n; ++i) if(cut[i]) { feature_dist[i] = 0; fqueue.push_back(int(i)); }
+      for(std::size_t i = 0; i < fqueue.size(); ++i)
       {
-        const std::size_t j = std::size_t(adjacency[std::size_t(k)]);
-        if(feature_dist[j] <= d + 1) continue;
-        feature_dist[j] = d + 1;
-        fqueue.push_back(int(j));
+        const int d = feature_dist[std::size_t(fqueue[i])];
+        for(const int* w = neighbors_begin(fqueue[i]); w != neighbors_end(fqueue[i]); ++w)
+        {
+          const std::size_t j = std::size_t(*w);
+          if(feature_dist[j] <= d + 1) continue;
+          feature_dist[j] = d + 1;
+          fqueue.push_back(int(j));
+        }
       }
     }
+    feature_dist_all_max = cut_count == 0;
     // separatrices
     std::vector<std::pair<int, int> > seeds;
     trace_separatrices(singular, seeds);
-    sep_begin.assign(by_index.size() + 1, 0);
-    for(const auto& so : seeds) ++sep_begin[std::size_t(so.first) + 1];
-    for(std::size_t i = 0; i < by_index.size(); ++i) sep_begin[i + 1] += sep_begin[i];
+    std::stable_sort(seeds.begin(), seeds.end(), [](const std::pair<int, int>& a, const std::pair<int, int>& b)
+                     { return a.first < b.first; });
+    for(const int i : sep_vertices) sep_end[std::size_t(i)] = sep_begin[std::size_t(i)];
+    sep_begin.resize(n, 0);
+    sep_end.resize(n, 0);
+    sep_vertices.clear();
     sep_owner.resize(seeds.size());
-    std::vector<int> cursor(sep_begin.begin(), sep_begin.end() - 1);
-    for(const auto& so : seeds) sep_owner[std::size_t(cursor[std::size_t(so.first)]++)] = so.second;
-    sep_near.source.resize(by_index.size() * 3);
-    sep_near.distance.resize(by_index.size() * 3);
-    sep_near.count.resize(by_index.size());
-    sep_near_known.assign(by_index.size(), 0);
-    visit.assign(by_index.size(), 0u);
-    visit_round = 0;
-    return singular;
+    for(std::size_t k = 0; k < seeds.size(); ++k)
+    {
+      const std::size_t i = std::size_t(seeds[k].first);
+      if(k == 0 || seeds[k - 1].first != seeds[k].first) { sep_vertices.push_back(int(i)); sep_begin[i] = int(k); }
+      sep_end[i] = int(k) + 1;
+      sep_owner[k] = seeds[k].second;
+    }
+    sep_near.source.resize(n * 3);
+    sep_near.distance.resize(n * 3);
+    sep_near.count.resize(n);
+    sep_near_known.resize(n, 0u);
+    visit.resize(n, 0u);
+    return std::move(singular);
   }
 
   // numbers the vertices (isolated ones excepted) in breadth-first order, component by component, and
@@ -389,12 +635,11 @@ private:
     std::vector<vertex_descriptor> singular;
     for(vertex_descriptor v : vertices(pm))
     {
-      if(halfedge(v, pm) == GT::null_halfedge() || get(stamp, v) == epoch) continue;
+      if(halfedge(v, pm) == GT::null_halfedge() || get(stamp, v) == numbering) continue;
       std::size_t i = by_index.size();
       number(v);
       for(; i < by_index.size(); ++i) if(add_row(by_index[i])) singular.push_back(by_index[i]);
     }
-    adjacency_begin.push_back(int(adjacency.size()));
     return singular;
   }
 
@@ -405,14 +650,14 @@ private:
   std::vector<vertex_descriptor> number_as_before(std::size_t previous_size)
   {
     // the key of each vertex: its previous number, unique among the vertices numbered in the previous
-    // batch (stamped with epoch - 1), or previous_size + its rank among the others
+    // batch (stamped with numbering - 1), or previous_size + its rank among the others
     std::vector<vertex_descriptor> stored;
     std::vector<int> key;
     int created = 0;
     for(vertex_descriptor v : vertices(pm))
     {
       if(halfedge(v, pm) == GT::null_halfedge()) continue;
-      const bool numbered = get(stamp, v) == epoch - 1 && std::size_t(get(index_map, v)) < previous_size;
+      const bool numbered = get(stamp, v) == numbering - 1 && std::size_t(get(index_map, v)) < previous_size;
       stored.push_back(v);
       key.push_back(numbered ? get(index_map, v) : int(previous_size) + created++);
     }
@@ -429,7 +674,7 @@ private:
     for(std::size_t j = 0; j < stored.size(); ++j)
     {
       index_of[j] = number_of_key[std::size_t(key[j])];
-      put(stamp, stored[j], epoch);
+      put(stamp, stored[j], numbering);
       put(index_map, stored[j], index_of[j]);
       by_index[std::size_t(index_of[j])] = stored[j];
     }
@@ -453,13 +698,15 @@ private:
     for(std::size_t j = 0; j < stored.size(); ++j)
       std::copy(row.begin() + row_begin[j], row.begin() + row_begin[j + 1],
                 adjacency.begin() + adjacency_begin[std::size_t(index_of[j])]);
+    adjacency_end.assign(adjacency_begin.begin() + 1, adjacency_begin.end());
+    adjacency_begin.pop_back();
     return singular;
   }
 
   // gives v the next index
   void number(vertex_descriptor v)
   {
-    put(stamp, v, epoch);
+    put(stamp, v, numbering);
     put(index_map, v, int(by_index.size()));
     by_index.push_back(v);
   }
@@ -472,7 +719,9 @@ private:
     defects.emplace_back();
     cut.emplace_back();
     passable.emplace_back();
-    return add_row(v, int(defects.size()) - 1, adjacency, true);
+    const bool singular = add_row(v, int(defects.size()) - 1, adjacency, true);
+    adjacency_end.push_back(int(adjacency.size()));
+    return singular;
   }
 
   // the same, v numbered i, its row appended to `row`, its neighbors numbered already unless `number_them`
@@ -483,7 +732,7 @@ private:
     for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
     {
       const vertex_descriptor w = source(h, pm);
-      if(number_them && get(stamp, w) != epoch) number(w);
+      if(number_them && get(stamp, w) != numbering) number(w);
       row.push_back(get(index_map, w));
       ++valence;
       if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) c = true;
@@ -491,6 +740,7 @@ private:
     }
     const int d = c ? internal::vertex_defect_info(v, pm, vpm, ecm, Kernel()).defect : valence - 4;
     defects[std::size_t(i)] = d;
+    cut_count = cut_count + (c ? 1 : 0) - cut[std::size_t(i)];
     cut[std::size_t(i)] = c ? 1 : 0;
     passable[std::size_t(i)] = c || p ? 0 : 1;
     return d != 0;
@@ -649,7 +899,7 @@ public:
   {
     const int i = index(v);
     if(i < 0) return max_radius + 1;
-    if(!sep_near_known[std::size_t(i)]) closest_separatrices(i);
+    if(sep_near_known[std::size_t(i)] != epoch) closest_separatrices(i);
     for(std::size_t k = std::size_t(i) * 3; k < std::size_t(i) * 3 + sep_near.count[std::size_t(i)]; ++k)
     {
       const vertex_descriptor owner = by_index[std::size_t(sep_near.source[k])];
@@ -708,16 +958,16 @@ public:
   }
 
   // the mesh as it was at the start of the batch, by vertex index (-1: a vertex created since)
-  int index(vertex_descriptor v) const { return get(stamp, v) == epoch ? get(index_map, v) : -1; }
+  int index(vertex_descriptor v) const { return get(stamp, v) == numbering ? get(index_map, v) : -1; }
   // the same, with -1 for null_vertex() too
   int index_or_none(vertex_descriptor v) const { return v == GT::null_vertex() ? -1 : index(v); }
   vertex_descriptor vertex(int i) const { return by_index[std::size_t(i)]; }
   int defect_at(int i) const { return defects[std::size_t(i)]; }
   // interior, on no constrained edge and no protected face
   bool is_passable_at(int i) const { return passable[std::size_t(i)] != 0; }
-  int valence_at(int i) const { return adjacency_begin[std::size_t(i) + 1] - adjacency_begin[std::size_t(i)]; }
+  int valence_at(int i) const { return adjacency_end[std::size_t(i)] - adjacency_begin[std::size_t(i)]; }
   const int* neighbors_begin(int i) const { return adjacency.data() + adjacency_begin[std::size_t(i)]; }
-  const int* neighbors_end(int i) const { return adjacency.data() + adjacency_begin[std::size_t(i) + 1]; }
+  const int* neighbors_end(int i) const { return adjacency.data() + adjacency_end[std::size_t(i)]; }
   std::size_t number_of_vertices() const { return by_index.size(); }
   /// \endcond
 
@@ -861,6 +1111,7 @@ private:
       k = ++near_stopped_count;
     }
     Near_stopped& e = near_stopped[k - 1];
+    e.vertex = i;
     e.queue.assign(near_work.begin() + std::ptrdiff_t(s.previous), near_work.begin() + std::ptrdiff_t(near_work_size));
     e.levels.previous = 0;
     e.levels.begin = s.begin - s.previous;
@@ -976,14 +1227,14 @@ private:
     const std::size_t row = std::size_t(i) * 3;
     unsigned char& count = sep_near.count[std::size_t(i)];
     count = 0;
-    sep_near_known[std::size_t(i)] = 1;
+    sep_near_known[std::size_t(i)] = epoch;
     local_queue.assign(1, i);
     local_level.assign(1, 0);
     visit[std::size_t(i)] = visit_round;
     for(std::size_t q = 0; q < local_queue.size() && count < 3; ++q)
     {
       const int u = local_queue[q];
-      for(int k = sep_begin[std::size_t(u)]; k < sep_begin[std::size_t(u) + 1] && count < 3; ++k)
+      for(int k = sep_begin[std::size_t(u)]; k < sep_end[std::size_t(u)] && count < 3; ++k)
       {
         const int o = sep_owner[std::size_t(k)];
         bool known = false;

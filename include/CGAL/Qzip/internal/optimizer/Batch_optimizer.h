@@ -681,6 +681,7 @@ private:
       for(vertex_descriptor v : enclosed)
         if(get(search_stamp, v) != search_epoch) around.push_back(v);
       mark(around);
+      ctx.rows_edited(enclosed); // the shell and what it encloses: the undo changed no other row
       for(vertex_descriptor v : around)
       {
         const auto it = std::lower_bound(in_scar.begin(), in_scar.end(), std::make_pair(get(vpm, v), std::make_pair(false, false)),
@@ -697,6 +698,7 @@ private:
     for(std::size_t i = 0; i < region.size() && level[i] <= 2; ++i) near_path.push_back(region[i]);
     const std::pair<std::size_t, double> before = quality(near_path);
     Qzip_history<PolygonMesh, VertexPointMap> history(pm, vpm); // this surgery only
+    ctx.may_remove(inner);
     Qzip_result<PolygonMesh> r = execute_qzip(pm, plan, history, exec_np);
     if(!r.is_done())
     {
@@ -738,6 +740,8 @@ private:
     }
     for(vertex_descriptor v : scar) put(scar_stamp, v, batch_epoch);
     edited_vertices.insert(edited_vertices.end(), scar.begin(), scar.end());
+    ctx.rows_edited(scar);
+    ctx.survived(region_within_outer(shell)); // the vertices of `inner` still alive
     // new vertices (all touched) may reuse the descriptors of removed ones, with their marks
     for(vertex_descriptor v : r.touched_vertices) put(op_stamp, v, surgery_serial);
     const std::vector<vertex_descriptor> near_touched = ball(r.touched_vertices, 2);
@@ -1112,6 +1116,7 @@ private:
       stats.number_of_undone_surgeries += chains.number_of_undos();
       if(chains.number_of_executions() > 0) // undone Q-zips may give new descriptors to re-created vertices
       {
+        ctx.rows_changed_elsewhere(); // the chains undone tell no one where they were
         take_singular(ctx.begin_batch(edited_vertices));
         stats.pairing_distance = pairing_distance();
         stats.number_of_singularities = singular.size();
