@@ -359,14 +359,21 @@ private:
     return paths;
   }
 
-  // the plan keeps the number of faces within the tolerance, or brings it closer to the initial one
-  bool keeps_face_count(const Surgery_plan<PolygonMesh>& plan) const
+  // changing the number of faces by `change` keeps it within the tolerance, or brings it closer to the
+  // initial one
+  bool keeps_face_count(long change) const
   {
     const long f0 = long(stats.initial_number_of_faces);
     const long fnow = long(stats.number_of_faces);
-    const long fafter = fnow + long(plan.number_of_splits()) - long(plan.number_of_collapses());
+    const long fafter = fnow + change;
     return std::abs(double(fafter - f0)) <= settings.face_count_tolerance * double(f0) ||
            std::abs(fafter - f0) < std::abs(fnow - f0);
+  }
+
+  // so does the plan, as planned (its execution may collapse more: the clean-up of valence-2 vertices)
+  bool keeps_face_count(const Surgery_plan<PolygonMesh>& plan) const
+  {
+    return keeps_face_count(long(plan.number_of_splits()) - long(plan.number_of_collapses()));
   }
 
   // scores the candidates of source s (the four motions along the paths to its closest partners) and
@@ -716,9 +723,11 @@ private:
     for(vertex_descriptor v : scar) saved.push_back(get(vpm, v));
     if(settings.smooth) smoother.smooth(scar, settings.smoothing_iterations);
     // never worse: no more inverted quads than before, and no quad worse than the worst one before
-    // unless it stays above the quality floor
+    // unless it stays above the quality floor; and the number of faces the execution left within the
+    // tolerance (or closer to the initial one)
     const std::pair<std::size_t, double> after = quality(scar);
-    bool keep = after.first <= before.first && after.second >= (std::min)(before.second, settings.quality_floor);
+    bool keep = after.first <= before.first && after.second >= (std::min)(before.second, settings.quality_floor) &&
+                keeps_face_count(long(r.number_of_splits) - long(r.number_of_collapses));
     if(keep && require_decrease)
     {
       const std::pair<bool, std::size_t> singular_after = singular_in_region(r.touched_vertices, shell);

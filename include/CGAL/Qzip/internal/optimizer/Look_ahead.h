@@ -599,8 +599,8 @@ private:
       state.face_change += long(r.number_of_splits) - long(r.number_of_collapses);
 
       bool found = false;
-      if(r.reverse_status == Reverse_qzip_status::SINGULARITIES_CANCELLED)
-        found = passes_quality_guard(state, chain);
+      if(r.reverse_status == Reverse_qzip_status::SINGULARITIES_CANCELLED) // within the face budget as executed
+        found = keeps_face_count(state.face_change) && passes_quality_guard(state, chain);
       else if(depth > 1 && r.moved_source != GT::null_vertex())
       {
         const int d2 = distance_to_opposite(r.moved_source, (std::min)(d, depth) - 1);
