@@ -570,6 +570,31 @@ void test_replanned_after_undos(const std::string& data_dir)
   assert(tried[1] > tried[0] && stats[1].number_of_skipped_surgeries < stats[0].number_of_skipped_surgeries);
 }
 
+// The number of faces stays within `face_count_tolerance` of the initial one (on the mesh the optimizer
+// receives), with tight tolerances on the bundled gargoyle (all quads), batches and end game, and singularities
+// still cancel. (Surgeries are also judged on the faces their execution left, whose clean-up may collapse more
+// quads than the plan says; that happened on libigl_horse_quad of the shared corpus, not here: without that
+// check this test passes too.)
+void test_face_count_tolerance(const std::string& data_dir)
+{
+  for(double tolerance : { 0.002, 0.01 })
+  {
+    Surface_mesh m;
+    if(!read_mesh(data_dir + "quadriflow_gargoyle.obj", m)) { std::cerr << "cannot read the gargoyle" << std::endl; assert(false); }
+    Q::preprocess_valences(m);
+    const double f0 = double(faces(m).size());
+    const Q::Optimizer_statistics s =
+      Q::optimize_singularities(m, Q::parameters::face_count_tolerance(tolerance,
+                                   Q::parameters::stop_predicate(Q::Batch_count_stop_predicate(40))));
+    const double change = double(faces(m).size()) - f0;
+    std::cout << "face count tolerance " << tolerance << ": " << f0 << " -> " << faces(m).size() << " faces, "
+              << s.initial_number_of_singularities << " -> " << s.number_of_singularities << " singularities" << std::endl;
+    assert(s.number_of_faces == faces(m).size());
+    assert(std::abs(change) <= tolerance * f0);
+    assert(s.number_of_singularities < s.initial_number_of_singularities);
+  }
+}
+
 // ten batches on the Catmull-Clark sphere of level 4 with the given Optimizer_settings::sparse_pairing_distance;
 // checks that each batch executes all its candidates (or the best half, `all` false) and the invariants
 template <typename Mesh>
@@ -1276,6 +1301,7 @@ int main(int argc, char** argv)
   test_travel();
   test_same_result_after_undos("data/");
   test_replanned_after_undos("data/");
+  test_face_count_tolerance("data/");
   test_all_candidates_when_sparse();
   test_context_across_batches<Surface_mesh>();
   test_context_across_batches<Polyhedron>();
