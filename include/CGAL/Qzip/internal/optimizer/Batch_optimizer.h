@@ -671,12 +671,12 @@ private:
     // removed vertices at the same places, with new descriptors (which may be recycled, with or without
     // their former stamps, depending on the mesh type), and they must be in the scars as before
     // (and in the region of a surgery kept earlier in the batch, see replan())
-    std::vector<std::pair<Point, std::pair<bool, bool> > > in_scar;
+    struct Stamps_at { Point point; bool in_scar, kept; };
+    std::vector<Stamps_at> stamps;
     for(vertex_descriptor v : inner)
-      in_scar.emplace_back(get(vpm, v), std::make_pair(get(scar_stamp, v) == batch_epoch, get(kept_stamp, v) == batch_epoch));
-    std::sort(in_scar.begin(), in_scar.end(), [](const std::pair<Point, std::pair<bool, bool> >& a,
-                                                 const std::pair<Point, std::pair<bool, bool> >& b)
-              { return point_less(a.first, b.first); });
+      stamps.push_back(Stamps_at{ get(vpm, v), get(scar_stamp, v) == batch_epoch, get(kept_stamp, v) == batch_epoch });
+    auto by_point = [](const Stamps_at& a, const Stamps_at& b) { return point_less(a.point, b.point); };
+    std::sort(stamps.begin(), stamps.end(), by_point);
     auto mark_after_undo = [&]()
     {
       mark(region);           // no walk: some of these descriptors may be dead
@@ -691,13 +691,10 @@ private:
       ctx.rows_edited(enclosed); // the shell and what it encloses: the undo changed no other row
       for(vertex_descriptor v : around)
       {
-        const auto it = std::lower_bound(in_scar.begin(), in_scar.end(), std::make_pair(get(vpm, v), std::make_pair(false, false)),
-                                         [](const std::pair<Point, std::pair<bool, bool> >& a,
-                                            const std::pair<Point, std::pair<bool, bool> >& b)
-                                         { return point_less(a.first, b.first); });
-        if(it == in_scar.end() || it->first != get(vpm, v)) continue;
-        put(scar_stamp, v, it->second.first ? batch_epoch : 0u);
-        put(kept_stamp, v, it->second.second ? batch_epoch : 0u);
+        const auto it = std::lower_bound(stamps.begin(), stamps.end(), Stamps_at{ get(vpm, v), false, false }, by_point);
+        if(it == stamps.end() || it->point != get(vpm, v)) continue;
+        put(scar_stamp, v, it->in_scar ? batch_epoch : 0u);
+        put(kept_stamp, v, it->kept ? batch_epoch : 0u);
       }
     };
 

@@ -364,6 +364,21 @@ private:
     return true;
   }
 
+  // calls f(h) once for each intact quad (see is_intact()) around the vertices of `vs`, h a halfedge of it
+  template <typename F>
+  void for_each_intact_quad(const std::vector<vertex_descriptor>& vs, const F& f) const
+  {
+    std::unordered_set<face_descriptor, boost::hash<face_descriptor> > seen;
+    for(vertex_descriptor v : vs)
+      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+        if(!is_border(h, pm) && is_quad(h, pm) && is_intact(h) && seen.insert(face(h, pm)).second) f(h);
+  }
+
+  double quality(halfedge_descriptor h) const
+  {
+    return quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm));
+  }
+
   // Before a Q-zip of the search, `near_path` (the vertices within three edges of its path, alive) joins
   // near_chain. The quads around the vertices that join it, intact until now, are recorded as they are
   // (quads_before): any quad the search changes is recorded before it changes. Their neighbours outside
@@ -373,11 +388,7 @@ private:
   {
     std::vector<vertex_descriptor> joining;
     for(vertex_descriptor v : near_path) if(near_chain.count(v) == 0) joining.push_back(v);
-    std::unordered_set<face_descriptor, boost::hash<face_descriptor> > recorded;
-    for(vertex_descriptor v : joining)
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-        if(!is_border(h, pm) && is_quad(h, pm) && is_intact(h) && recorded.insert(face(h, pm)).second)
-          quads_before.push_back(Quad_before{ quad_key(h), quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm)) });
+    for_each_intact_quad(joining, [this](halfedge_descriptor h) { quads_before.push_back(Quad_before{ quad_key(h), quality(h) }); });
     near_chain.insert(joining.begin(), joining.end());
     for(vertex_descriptor v : joining)
       for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
@@ -482,14 +493,9 @@ private:
       ++q.count;
     };
     for(const Quad_before& q : quads_before) count_before(q.key, q.quality);
-    {
-      std::unordered_set<face_descriptor, boost::hash<face_descriptor> > counted;
-      for(vertex_descriptor v : scar)
-        if(is_unchanged(v))
-          for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-            if(!is_border(h, pm) && is_quad(h, pm) && is_intact(h) && counted.insert(face(h, pm)).second)
-              count_before(quad_key(h), quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm)));
-    }
+    std::vector<vertex_descriptor> unchanged_in_scar;
+    for(vertex_descriptor v : scar) if(is_unchanged(v)) unchanged_in_scar.push_back(v);
+    for_each_intact_quad(unchanged_in_scar, [&](halfedge_descriptor h) { count_before(quad_key(h), quality(h)); });
     auto passes = [&]() { return changed_quads_pass(scar, before); };
     if(settings.smooth) smoother.smooth(scar, 3 * settings.smoothing_iterations);
     if(passes() || (settings.smooth && smoother.untangle(scar, untangling_sweeps, settings.quality_floor) > 0 && passes()))
