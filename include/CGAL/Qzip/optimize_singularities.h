@@ -66,8 +66,10 @@ candidates are sorted and the best half is executed serially (all of them, best 
 singularities are sparse: `Optimizer_statistics::pairing_distance` at least 25 times their number, as on
 fine subdivisions), skipping any surgery whose path comes within
 three edges of a path already operated on in this batch (a singularity whose best candidate is skipped
-tries its next ones instead). After each surgery its scar is smoothed (see `smooth_quad_mesh()`); if the
-surgery leaves more inverted quads (scaled Jacobian `<= 0`) near its path than there were, the smoothing
+tries its next ones instead), unless all those surgeries were undone: then the mesh there is as it was, and
+the candidate is found again by its positions and planned again. After each surgery its scar is smoothed (see `smooth_quad_mesh()`); if the
+surgery leaves more inverted quads (scaled Jacobian `<= 0`) near its path than there were (or the number of
+faces outside `face_count_tolerance`), the smoothing
 and the surgery are undone exactly, and the same surgery (same positions of its ends, same motion) is not
 a candidate again until a batch lowers the number of singularities. A kept Q-zip moves its pair by about
 one edge; while each end of the pair is still more than three edges from the singularity of the opposite

@@ -1081,13 +1081,7 @@ private:
     chain_settings.smoothing_iterations = settings.smoothing_iterations;
     chain_settings.quality_floor = settings.quality_floor;
     chain_settings.smooth = settings.smooth;
-    const long f0 = long(stats.initial_number_of_faces);
-    auto keeps_face_count = [&](long change)
-    {
-      const long fnow = long(stats.number_of_faces), fafter = fnow + change;
-      return std::abs(double(fafter - f0)) <= settings.face_count_tolerance * double(f0) ||
-             std::abs(fafter - f0) < std::abs(fnow - f0);
-    };
+    auto keeps_face_count = [this](long change) { return this->keeps_face_count(change); };
 
     bool kept = false;
     for(bool waiting = true; waiting; )
