@@ -19,7 +19,9 @@
 //   --count-stop   stop on No_improvement_stop_predicate (fewer singularities) instead of on progress
 //   --seed S       the random seed of the runs (default 0)
 // The summary line of each mesh on stderr also gives the median CPU time of the process (std::clock())
-// during optimize_singularities(), less sensitive than wall time to other jobs on the machine.
+// during optimize_singularities(), less sensitive than wall time to other jobs on the machine, and the
+// median CPU time until the number of singularities last changed (the plateau; the tables' last column):
+// a run goes on for a while after it, until its stop predicate gives up.
 
 #include "qzip_test_utils.h"
 
@@ -90,17 +92,37 @@ struct Bench_stop
   }
 };
 
+// records when the number of singularities changed (CPU time of the process since `start`, set by the
+// caller to the call of optimize_singularities()), and prints every batch with --trace
 struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
 {
+  bool print = false;
   std::clock_t start = 0;
-  void on_started(const Q::Optimizer_statistics&) { start = std::clock(); }
+  // the CPU seconds at which the count last took its current value
+  double count_since = 0;
+  std::size_t count = 0;
+  double cpu_seconds() const { return double(std::clock() - start) / CLOCKS_PER_SEC; }
+  void record(const Q::Optimizer_statistics& s)
+  {
+    if(s.number_of_singularities == count) return;
+    count = s.number_of_singularities;
+    count_since = cpu_seconds();
+  }
+  void on_started(const Q::Optimizer_statistics& s)
+  {
+    count = s.number_of_singularities;
+    count_since = cpu_seconds();
+  }
   void on_batch_finished(const Q::Optimizer_statistics& s)
   {
+    record(s);
+    if(!print) return;
     std::cerr << "    batch " << s.batch << ": " << s.number_of_singularities << " singularities, " << s.number_of_faces
               << " faces, pairing distance " << s.pairing_distance << ", " << s.candidates_in_last_batch << " candidates, " << s.surgeries_in_last_batch << " surgeries (so far " << s.number_of_skipped_surgeries << " skipped, " << s.number_of_replanned_surgeries << " replanned, " << s.number_of_undone_surgeries << " undone, " << s.number_of_failed_surgeries << " failed), " << s.elapsed_seconds << " s (scoring "
               << s.scoring_seconds << ", execution " << s.execution_seconds << "), CPU "
-              << double(std::clock() - start) / CLOCKS_PER_SEC << " s" << std::endl;
+              << cpu_seconds() << " s" << std::endl;
   }
+  void on_finished(const Q::Optimizer_statistics& s) { record(s); }
 };
 
 struct Row
@@ -109,6 +131,7 @@ struct Row
   Q::Mesh_report before, after;
   Q::Optimizer_statistics stats;
   double seconds = 0;
+  double plateau_seconds = 0; // CPU seconds until the final number of singularities was reached (median)
   std::string exact;
   std::size_t fingerprint = 0;
 };
@@ -135,7 +158,7 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
   copy_mesh(input, pre);
   Q::preprocess_valences(pre);
   row.before = Q::compute_mesh_report(pre);
-  std::vector<double> times, cpu;
+  std::vector<double> times, cpu, plateau;
   for(int i = 0; i < runs; ++i)
   {
     Mesh m;
@@ -144,15 +167,14 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
     const std::clock_t c0 = std::clock();
     t.start();
     Trace_visitor tracer;
-    if(trace && i + 1 == runs)
-      row.stats = Q::optimize_singularities(m, Q::parameters::stop_predicate(Bench_stop(),
-                                                   CGAL::parameters::random_seed(seed).visitor(std::ref(tracer))));
-    else
-      row.stats = Q::optimize_singularities(m, Q::parameters::stop_predicate(Bench_stop(),
-                                                   CGAL::parameters::random_seed(seed)));
+    tracer.print = trace && i + 1 == runs;
+    tracer.start = c0;
+    row.stats = Q::optimize_singularities(m, Q::parameters::stop_predicate(Bench_stop(),
+                                                 CGAL::parameters::random_seed(seed).visitor(std::ref(tracer))));
     t.stop();
     times.push_back(t.time());
     cpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
+    plateau.push_back(tracer.count_since);
     if(i + 1 == runs)
     {
       row.after = Q::compute_mesh_report(m);
@@ -170,10 +192,13 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
   }
   std::sort(times.begin(), times.end());
   std::sort(cpu.begin(), cpu.end());
+  std::sort(plateau.begin(), plateau.end());
   row.seconds = times[times.size() / 2];
+  row.plateau_seconds = plateau[plateau.size() / 2];
   std::cerr << "  " << name << ": " << singular(row.before) << " -> " << singular(row.after) << " singularities, "
             << row.before.number_of_faces << " -> " << row.after.number_of_faces << " faces, " << row.stats.batch << " batches + " << row.stats.end_game_rounds << " end-game rounds, "
-            << fmt(row.seconds) << " s (CPU " << fmt(cpu[cpu.size() / 2]) << " s)";
+            << fmt(row.seconds) << " s (CPU " << fmt(cpu[cpu.size() / 2]) << " s, final count after "
+            << fmt(row.plateau_seconds) << " s)";
   if(fingerprint) std::cerr << ", fingerprint " << std::hex << row.fingerprint << std::dec;
   std::cerr << std::endl;
   return row;
@@ -182,9 +207,9 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
 static void print_header(bool measure)
 {
   std::cout << "| mesh | faces before → after (Δ%) | singularities before → after | v3 / v5 after (interior) | bound 2·|4χ| + 1% F | "
-               "min / mean SJ before | min / mean SJ after | inverted after | batches | time (s) |"
+               "min / mean SJ before | min / mean SJ after | inverted after | batches | time (s) | to plateau (CPU s) |"
             << (measure ? " exact predictions |" : "") << "\n"
-            << "|---|---|---|---|---|---|---|---|---|---|" << (measure ? "---|" : "") << "\n";
+            << "|---|---|---|---|---|---|---|---|---|---|---|" << (measure ? "---|" : "") << "\n";
 }
 
 static void print_row(const Row& r, bool measure)
@@ -202,7 +227,7 @@ static void print_row(const Row& r, bool measure)
   std::cout << " | " << fmt(r.before.min_scaled_jacobian) << " / " << fmt(r.before.mean_scaled_jacobian) << " | "
             << fmt(r.after.min_scaled_jacobian) << " / " << fmt(r.after.mean_scaled_jacobian) << " | "
             << r.after.number_of_inverted_quads << (r.before.number_of_inverted_quads > 0 ? " (input: " + std::to_string(r.before.number_of_inverted_quads) + ")" : std::string())
-            << " | " << r.stats.batch << " | " << fmt(r.seconds) << " |" << (measure ? " " + r.exact + " |" : "") << "\n";
+            << " | " << r.stats.batch << " | " << fmt(r.seconds) << " | " << fmt(r.plateau_seconds) << " |" << (measure ? " " + r.exact + " |" : "") << "\n";
 }
 
 int main(int argc, char** argv)

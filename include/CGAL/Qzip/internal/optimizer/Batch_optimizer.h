@@ -295,6 +295,8 @@ private:
   // (`neighbors_per_type` of each), and the border/feature singularities met before. The search stops
   // once no vertex left could be taken: each type has its partners, or all singularities of that type
   // were met (a mesh with fewer than `neighbors_per_type` of a type would otherwise be searched whole).
+  // Vertices are judged as they are discovered, which is the order of the queue: the search stops at the
+  // discovery of the last partner, without expanding the rest of the level before it.
   std::vector<std::vector<vertex_descriptor> > partner_paths(vertex_descriptor s)
   {
     const int is = ctx.index(s);
@@ -314,34 +316,31 @@ private:
     const int ds = ctx.defect_at(is);
     std::size_t unmet3 = singular_of_sign[0] - (ds < 0 ? 1 : 0), unmet5 = singular_of_sign[1] - (ds > 0 ? 1 : 0);
     std::vector<int> partners;
-    for(std::size_t i = 0; i < index_queue.size(); ++i)
+    // takes the singular vertex v as a partner if it may be one; returns whether the search is over
+    auto meet = [&](int v)
+    {
+      const int d = ctx.defect_at(v);
+      const int dv = ctx.valence_at(v);
+      const bool usable = ctx.is_passable_at(v) && (dv == 3 || dv == 5);
+      if(usable && d < 0 && n3 < k) { ++n3; partners.push_back(v); }
+      else if(usable && d > 0 && n5 < k) { ++n5; partners.push_back(v); }
+      else if(!usable && others < 2 * k && ((d < 0 && n3 < k) || (d > 0 && n5 < k)))
+      { ++others; partners.push_back(v); } // boundary/feature defects
+      --(d < 0 ? unmet3 : unmet5);
+      return (n3 >= k || unmet3 == 0) && (n5 >= k || unmet5 == 0);
+    };
+    bool over = (unmet3 == 0 || k == 0) && (unmet5 == 0 || k == 0);
+    for(std::size_t i = 0; i < index_queue.size() && !over; ++i)
     {
       const int v = index_queue[i];
-      bool expand = (v == is);
-      if(v != is)
-      {
-        const int d = ctx.defect_at(v);
-        const bool passable = ctx.is_passable_at(v);
-        expand = passable;
-        if(d != 0)
-        {
-          const int dv = ctx.valence_at(v);
-          const bool usable = passable && (dv == 3 || dv == 5);
-          if(usable && d < 0 && n3 < k) { ++n3; partners.push_back(v); }
-          else if(usable && d > 0 && n5 < k) { ++n5; partners.push_back(v); }
-          else if(!usable && others < 2 * k && ((d < 0 && n3 < k) || (d > 0 && n5 < k)))
-          { ++others; partners.push_back(v); } // boundary/feature defects
-          --(d < 0 ? unmet3 : unmet5);
-          if((n3 >= k || unmet3 == 0) && (n5 >= k || unmet5 == 0)) break;
-        }
-      }
-      if(!expand) continue;
+      if(v != is && !ctx.is_passable_at(v)) continue;
       for(const int* w = ctx.neighbors_begin(v); w != ctx.neighbors_end(v); ++w)
       {
         if(search_visit[std::size_t(*w)] == search_round) continue;
         search_visit[std::size_t(*w)] = search_round;
         search_from[std::size_t(*w)] = v;
         index_queue.push_back(*w);
+        if(ctx.defect_at(*w) != 0 && meet(*w)) { over = true; break; }
       }
     }
     std::vector<std::vector<vertex_descriptor> > paths;
@@ -777,27 +776,28 @@ private:
   }
 
   // a shortest path from s to t through passable vertices on the mesh as it is now, if one has at most
-  // `max_length` edges (empty otherwise)
+  // `max_length` edges (empty otherwise): the path to t is known when t is discovered
   std::vector<vertex_descriptor> shortest_path_now(vertex_descriptor s, vertex_descriptor t, std::size_t max_length)
   {
+    if(s == t) return std::vector<vertex_descriptor>(1, s);
     ++search_epoch;
     std::vector<vertex_descriptor> queue(1, s);
     std::vector<std::size_t> from(1, 0), level(1, 0);
     put(search_stamp, s, search_epoch);
     for(std::size_t i = 0; i < queue.size(); ++i)
     {
-      if(queue[i] == t)
-      {
-        std::vector<vertex_descriptor> path;
-        for(std::size_t j = i; ; j = from[j]) { path.push_back(queue[j]); if(j == 0) break; }
-        std::reverse(path.begin(), path.end());
-        return path;
-      }
       if(level[i] >= max_length || (i > 0 && !is_passable_now(queue[i]))) continue;
       for(halfedge_descriptor h : halfedges_around_target(halfedge(queue[i], pm), pm))
       {
         const vertex_descriptor w = source(h, pm);
         if(get(search_stamp, w) == search_epoch) continue;
+        if(w == t)
+        {
+          std::vector<vertex_descriptor> path(1, t);
+          for(std::size_t j = i; ; j = from[j]) { path.push_back(queue[j]); if(j == 0) break; }
+          std::reverse(path.begin(), path.end());
+          return path;
+        }
         put(search_stamp, w, search_epoch);
         queue.push_back(w);
         from.push_back(i);
@@ -829,24 +829,31 @@ private:
                           watch(ctx.closest_opposite_singularity(t, ctx.defect(t), s, t).vertex));
   }
 
-  // the distances from `from` to the vertices of `queries` on the mesh as it is now (-1 for those not reached)
+  // the distances from `from` to the vertices of `queries` on the mesh as it is now (-1 for those not
+  // reached); the search stops at the discovery of the last of them
   std::vector<int> distances_now(vertex_descriptor from, const std::vector<vertex_descriptor>& queries)
   {
     std::vector<int> out(queries.size(), -1);
     std::size_t found = 0;
+    auto meet = [&](vertex_descriptor v, int d)
+    {
+      for(std::size_t q = 0; q < queries.size(); ++q)
+        if(queries[q] == v && out[q] < 0) { out[q] = d; ++found; }
+      return found == queries.size();
+    };
+    if(meet(from, 0)) return out;
     ++search_epoch;
     std::vector<vertex_descriptor> queue(1, from);
     std::vector<int> level(1, 0);
     put(search_stamp, from, search_epoch);
-    for(std::size_t i = 0; i < queue.size() && found < queries.size(); ++i)
+    for(std::size_t i = 0; i < queue.size(); ++i)
     {
-      for(std::size_t q = 0; q < queries.size(); ++q)
-        if(queries[q] == queue[i] && out[q] < 0) { out[q] = level[i]; ++found; }
       for(halfedge_descriptor h : halfedges_around_target(halfedge(queue[i], pm), pm))
       {
         const vertex_descriptor w = source(h, pm);
         if(get(search_stamp, w) == search_epoch) continue;
         put(search_stamp, w, search_epoch);
+        if(meet(w, level[i] + 1)) return out;
         queue.push_back(w);
         level.push_back(level[i] + 1);
       }
