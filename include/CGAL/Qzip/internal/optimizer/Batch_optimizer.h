@@ -134,9 +134,10 @@ class Batch_optimizer
   std::size_t partner_base = 0;
   std::vector<vertex_descriptor> partner_vertices;
   std::vector<unsigned char> partner_lost;
-  // partner search on the context's arrays
+  // partner search on the context's arrays: the queue, and for each of its entries the place in the
+  // queue of the vertex it was reached from (written in sequence: no store at a random place per vertex)
   std::vector<unsigned int> search_visit;
-  std::vector<int> search_from, index_queue;
+  std::vector<int> index_queue, queue_parent;
   unsigned int search_round = 0;
   std::vector<vertex_descriptor> singular;
   std::size_t singular_of_sign[2] = { 0, 0 }; // how many of them are v3-like (0) and v5-like (1)
@@ -300,32 +301,31 @@ private:
   std::vector<std::vector<vertex_descriptor> > partner_paths(vertex_descriptor s)
   {
     const int is = ctx.index(s);
-    if(search_visit.size() < ctx.number_of_vertices())
-    {
-      search_visit.assign(ctx.number_of_vertices(), 0u);
-      search_from.resize(ctx.number_of_vertices());
-    }
+    if(search_visit.size() < ctx.number_of_vertices()) search_visit.assign(ctx.number_of_vertices(), 0u);
     if(++search_round == 0) { std::fill(search_visit.begin(), search_visit.end(), 0u); search_round = 1; }
     index_queue.clear();
+    queue_parent.clear();
     index_queue.push_back(is);
+    queue_parent.push_back(0);
     search_visit[std::size_t(is)] = search_round;
-    search_from[std::size_t(is)] = is;
     std::size_t n3 = 0, n5 = 0, others = 0;
     const std::size_t k = settings.neighbors_per_type;
     // the singularities of each type not met yet, s excluded
     const int ds = ctx.defect_at(is);
     std::size_t unmet3 = singular_of_sign[0] - (ds < 0 ? 1 : 0), unmet5 = singular_of_sign[1] - (ds > 0 ? 1 : 0);
-    std::vector<int> partners;
-    // takes the singular vertex v as a partner if it may be one; returns whether the search is over
-    auto meet = [&](int v)
+    std::vector<std::size_t> partners; // by their places in the queue
+    // takes the singular vertex at place q of the queue as a partner if it may be one; returns whether the
+    // search is over
+    auto meet = [&](std::size_t q)
     {
+      const int v = index_queue[q];
       const int d = ctx.defect_at(v);
       const int dv = ctx.valence_at(v);
       const bool usable = ctx.is_passable_at(v) && (dv == 3 || dv == 5);
-      if(usable && d < 0 && n3 < k) { ++n3; partners.push_back(v); }
-      else if(usable && d > 0 && n5 < k) { ++n5; partners.push_back(v); }
+      if(usable && d < 0 && n3 < k) { ++n3; partners.push_back(q); }
+      else if(usable && d > 0 && n5 < k) { ++n5; partners.push_back(q); }
       else if(!usable && others < 2 * k && ((d < 0 && n3 < k) || (d > 0 && n5 < k)))
-      { ++others; partners.push_back(v); } // boundary/feature defects
+      { ++others; partners.push_back(q); } // boundary/feature defects
       --(d < 0 ? unmet3 : unmet5);
       return (n3 >= k || unmet3 == 0) && (n5 >= k || unmet5 == 0);
     };
@@ -338,19 +338,19 @@ private:
       {
         if(search_visit[std::size_t(*w)] == search_round) continue;
         search_visit[std::size_t(*w)] = search_round;
-        search_from[std::size_t(*w)] = v;
         index_queue.push_back(*w);
-        if(ctx.defect_at(*w) != 0 && meet(*w)) { over = true; break; }
+        queue_parent.push_back(int(i));
+        if(ctx.defect_at(*w) != 0 && meet(index_queue.size() - 1)) { over = true; break; }
       }
     }
     std::vector<std::vector<vertex_descriptor> > paths;
-    for(int t : partners)
+    for(std::size_t t : partners)
     {
       std::vector<vertex_descriptor> path;
-      for(int v = t; ; v = search_from[std::size_t(v)])
+      for(std::size_t q = t; ; q = std::size_t(queue_parent[q]))
       {
-        path.push_back(ctx.vertex(v));
-        if(v == is) break;
+        path.push_back(ctx.vertex(index_queue[q]));
+        if(q == 0) break;
       }
       std::reverse(path.begin(), path.end());
       paths.push_back(std::move(path));
