@@ -158,7 +158,8 @@ Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valen
   \cgalParamNEnd
   \cgalParamNBegin{face_count_tolerance}
     \cgalParamDescription{(Qzip) a candidate that would take the number of faces farther than this fraction
-                          of the initial number away from it is not considered}
+                          of the number of faces of `pm` (as given, before the collisions of its triangles)
+                          away from it is not considered}
     \cgalParamDefault{0.1}
   \cgalParamNEnd
   \cgalParamNBegin{random_seed}
@@ -216,6 +217,8 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
   settings.smoothing_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 5);
   settings.face_count_tolerance = choose_parameter(get_parameter(np, Qzip::internal_np::face_count_tolerance), 0.1);
   settings.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+
+  settings.input_number_of_faces = faces(pm).size();
 
   typedef internal::Triangle_pairing<PolygonMesh, VPM, ECM, FCM, Geom_traits> Pairing;
   Optimizer_result result;

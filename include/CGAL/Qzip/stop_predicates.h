@@ -29,6 +29,8 @@ struct Optimizer_statistics
   std::size_t batch = 0;                        ///< number of batches done
   std::size_t initial_number_of_singularities = 0;
   std::size_t number_of_singularities = 0;      ///< now
+  /// the number of faces of the mesh given to `optimize_singularities()` (before the collisions of its
+  /// triangles): `face_count_tolerance` is a fraction of it
   std::size_t initial_number_of_faces = 0;
   std::size_t number_of_faces = 0;              ///< now
   std::size_t batches_without_improvement = 0;  ///< batches since `number_of_singularities` last decreased

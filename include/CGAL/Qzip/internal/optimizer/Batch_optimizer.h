@@ -48,6 +48,10 @@ struct Optimizer_settings
   bool smooth = true;
   int smoothing_iterations = 5;
   double face_count_tolerance = 0.1;
+  // the number of faces the face budget is measured from (Optimizer_statistics::initial_number_of_faces):
+  // that of the mesh given to optimize_singularities(), before its triangle pairing (0: the number at the
+  // start of the batches)
+  std::size_t input_number_of_faces = 0;
   unsigned int seed = 0;
   std::size_t neighbors_per_type = 3;
   double quality_floor = 0.1;
@@ -175,7 +179,9 @@ public:
     timer.start();
     take_singular(ctx.begin_batch());
     stats.initial_number_of_singularities = stats.number_of_singularities = singular.size();
-    stats.initial_number_of_faces = stats.number_of_faces = faces(pm).size();
+    stats.number_of_faces = faces(pm).size();
+    stats.initial_number_of_faces = settings.input_number_of_faces != 0 ? settings.input_number_of_faces
+                                                                         : stats.number_of_faces;
     stats.pairing_distance = best_pairing_distance = pairing_distance();
     visitor.on_started(stats);
     for(;;)
