@@ -64,7 +64,6 @@ class Quad_smoother
   Reference_surface<GeomTraits> surface;
   // per vertex, the triangle of the surface its last projection landed on (see Reference_surface)
   Hint_map hint;
-  std::unordered_map<vertex_descriptor, int, boost::hash<vertex_descriptor> > fixed_valence;
   // feature vertices: their position when the smoother was built; for sliding ones, their two feature neighbors
   struct Feature_vertex { Point origin; bool slides; vertex_descriptor a, b; };
   std::unordered_map<vertex_descriptor, Feature_vertex, boost::hash<vertex_descriptor> > feature_vertices;
@@ -206,8 +205,10 @@ public:
     return best;
   }
 
-  // the valence used for the spring stiffness: the valence of an interior vertex, 4 + defect on the border/features.
-  int effective_valence(vertex_descriptor v)
+  // the valence used for the spring stiffness: the valence of an interior vertex, 4 + defect on the border/features,
+  // on the mesh as it is (a Q-zip may move a border or feature defect, and a vertex it creates may get the
+  // descriptor of a removed one: nothing is cached by descriptor)
+  int effective_valence(vertex_descriptor v) const
   {
     bool cut = false;
     int n = 0;
@@ -217,11 +218,7 @@ public:
       if(is_border_edge(h, pm) || get(ecm, edge(h, pm))) cut = true;
     }
     if(!cut) return n;
-    auto it = fixed_valence.find(v);
-    if(it != fixed_valence.end()) return it->second;
-    const int e = 4 + vertex_defect_info(v, pm, vpm, ecm, GeomTraits()).defect;
-    fixed_valence.emplace(v, e);
-    return e;
+    return 4 + vertex_defect_info(v, pm, vpm, ecm, GeomTraits()).defect;
   }
 
   // the number of inverted quads around v and the smallest scaled Jacobian among its quads (1 if none)

@@ -356,11 +356,14 @@ private:
     return k;
   }
 
-  // whether no corner of the quad of h is within three edges of a Q-zip of the search (see near_chain):
-  // the quad is then as it was before the search
+  // whether every corner of the quad of h is unchanged (see is_unchanged()): the quad is then as it was
+  // before the search. A vertex that an undo re-created has a new descriptor, or that of a removed vertex
+  // (which one depends on the mesh type and, on Polyhedron_3, on the heap), but never that of a vertex of
+  // the region no Q-zip came near: its quads are not intact whatever descriptor it got (counting them as
+  // intact recorded a quad twice in quads_before on one mesh type and once on the other)
   bool is_intact(halfedge_descriptor h) const
   {
-    for(int i = 0; i < 4; ++i, h = next(h, pm)) if(near_chain.count(target(h, pm)) != 0) return false;
+    for(int i = 0; i < 4; ++i, h = next(h, pm)) if(!is_unchanged(target(h, pm))) return false;
     return true;
   }
 
