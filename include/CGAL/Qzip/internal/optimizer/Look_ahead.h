@@ -122,7 +122,7 @@ public:
       region_level.clear();
       std::vector<int> level;
       const std::vector<vertex_descriptor> region =
-        vertex_ball(std::vector<vertex_descriptor>(1, a), region_radius(), pm, level,
+        vertex_ball(std::vector<vertex_descriptor>(1, a), region_radius() + 1, pm, level,
                     [this](vertex_descriptor v) { return region_level.emplace(v, 0).second; });
       for(std::size_t i = 0; i < region.size(); ++i) region_level[region[i]] = level[i];
     }
@@ -642,7 +642,8 @@ private:
   std::size_t executions = 0, undos = 0, budget_end = 0, judgements = 0, judgement_end = 0;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_paths;
   std::unordered_set<vertex_descriptor, Vertex_hash> near_chain; // the part of near_paths of the current search
-  // the distance to `a` of the vertices of the region of the current search (before it), at most region_radius()
+  // the distance to `a` of the vertices of the region of the current search (before it), at most region_radius() + 1
+  // (one more than the chains can change: the corners of the quads around the vertices they change are in it)
   std::unordered_map<vertex_descriptor, int, Vertex_hash> region_level;
   // vertices of the region closer than region_radius() to `a` that were next to near_chain when it grew
   std::vector<vertex_descriptor> next_to_chain;
