@@ -193,8 +193,8 @@ private:
   mutable std::vector<std::size_t> kept_free;
   mutable int kept_radius = 0; // the largest radius of a kept search
   // separatrices: the singularities whose separatrices pass through each vertex (rows of sep_owner, from
-  // sep_begin to sep_end, in the order of the seeds), and, computed when first asked for in a batch, the
-  // three closest of them within m_separatrix_radius edges
+  // sep_begin to sep_end, in the order of the seeds; both 0 at the other vertices), and, computed when
+  // first asked for in a batch, the three closest of them within m_separatrix_radius edges
   std::vector<int> sep_begin, sep_end, sep_owner;
   std::vector<int> sep_vertices; // the vertices whose rows are not empty
   mutable Labels sep_near;
@@ -614,20 +614,23 @@ private:
     // separatrices
     std::vector<std::pair<int, int> > seeds;
     trace_separatrices(singular, seeds);
-    std::stable_sort(seeds.begin(), seeds.end(), [](const std::pair<int, int>& a, const std::pair<int, int>& b)
-                     { return a.first < b.first; });
-    for(const int i : sep_vertices) sep_end[std::size_t(i)] = sep_begin[std::size_t(i)];
+    // the seeds grouped by vertex (rows in the order of the first seeds at their vertices), in the order of
+    // the seeds within a row: counted in sep_end, then written from sep_begin on (both 0 outside the rows)
+    for(const int i : sep_vertices) sep_begin[std::size_t(i)] = sep_end[std::size_t(i)] = 0;
     sep_begin.resize(n, 0);
     sep_end.resize(n, 0);
     sep_vertices.clear();
-    sep_owner.resize(seeds.size());
-    for(std::size_t k = 0; k < seeds.size(); ++k)
+    for(const std::pair<int, int>& seed : seeds)
+      if(sep_end[std::size_t(seed.first)]++ == 0) sep_vertices.push_back(seed.first);
+    int row_begin = 0;
+    for(const int i : sep_vertices)
     {
-      const std::size_t i = std::size_t(seeds[k].first);
-      if(k == 0 || seeds[k - 1].first != seeds[k].first) { sep_vertices.push_back(int(i)); sep_begin[i] = int(k); }
-      sep_end[i] = int(k) + 1;
-      sep_owner[k] = seeds[k].second;
+      sep_begin[std::size_t(i)] = row_begin;
+      row_begin += sep_end[std::size_t(i)];
+      sep_end[std::size_t(i)] = sep_begin[std::size_t(i)];
     }
+    sep_owner.resize(seeds.size());
+    for(const std::pair<int, int>& seed : seeds) sep_owner[std::size_t(sep_end[std::size_t(seed.first)]++)] = seed.second;
     sep_near.source.resize(n * 3);
     sep_near.distance.resize(n * 3);
     sep_near.count.resize(n);
