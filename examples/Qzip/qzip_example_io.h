@@ -148,7 +148,7 @@ inline bool ply_lists_fit(std::istream& in, const std::string& format, const std
 /// fails (`std::bad_alloc`, or an abort under AddressSanitizer) on absurd counts, and its PLY reader
 /// dereferences the last element of an empty list on a property without element, and a null pointer on
 /// integer or list coordinates (segmentation faults in Release; assertions otherwise).
-/// Other formats and binary OFF are not checked.
+/// In a binary OFF header the counts must not be negative. Other formats are not checked.
 inline bool check_file_header(const std::string& path, std::uintmax_t file_size, std::string& error)
 {
   std::ifstream in(path, std::ios::binary);
@@ -232,14 +232,45 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
   if(token.size() < 3 || token.compare(token.size() - 3, 3, "OFF") != 0) return true;
   std::string rest;
   std::getline(first, rest);
-  if(rest.find("BINARY") != std::string::npos) return true;
   // the counts follow the keyword, on its line or on the next line that is not a comment
+  auto is_blank_or_comment = [](const std::string& l)
+  {
+    const std::size_t i = l.find_first_not_of(" \t\r");
+    return i == std::string::npos || l[i] == '#';
+  };
+  while(is_blank_or_comment(rest))
+    if(!std::getline(in, rest)) return true;
   std::istringstream counts(rest);
+  std::string word;
+  if((counts >> word) && word.compare(0, 6, "BINARY") == 0)
+  {
+    // binary: the counts are big-endian 32-bit integers after the end of that line (a dimension first for
+    // nOFF); CGAL 5.5 turns a negative count into a huge one, and computes an int from the sum of the counts
+    // (undefined behaviour when it overflows)
+    const bool n_dimensional = token.find('n') != std::string::npos;
+    long long value[3] = { 0, 0, 0 };
+    for(int k = n_dimensional ? -1 : 0; k < 2; ++k)
+    {
+      unsigned char b[4];
+      if(!in.read(reinterpret_cast<char*>(b), 4)) return true;
+      const long long x = std::int32_t(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 |
+                                       std::uint32_t(b[2]) << 8 | std::uint32_t(b[3]));
+      if(k >= 0) value[k] = x;
+    }
+    if(value[0] < 0 || value[1] < 0)
+    {
+      error = "cannot read '" + path + "': malformed binary OFF header (a negative element count)";
+      return false;
+    }
+    return !too_many(double(value[0] + value[1]));
+  }
+  counts.clear();
+  counts.str(rest);
   double v = 0, f = 0;
   while(!(counts >> v >> f))
   {
     if(!std::getline(in, line)) return true;
-    if(line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t\r")] == '#') continue;
+    if(is_blank_or_comment(line)) continue;
     counts.clear();
     counts.str(line);
   }
