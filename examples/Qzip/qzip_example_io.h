@@ -22,6 +22,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -139,6 +140,69 @@ inline bool ply_lists_fit(std::istream& in, const std::string& format, const std
   return true;
 }
 
+/// For a binary OFF file, scanned as CGAL 5.5's `File_header_OFF` does (the keyword is the first run of letters
+/// and digits after blanks and comments, the character after it is consumed; then the word `BINARY`, the end of
+/// its line, and big-endian 32-bit counts, a dimension first for `nOFF`): returns `true` with a message in
+/// `error` if a count is negative or the counts declare more elements than the file can hold (CGAL turns a
+/// negative count into a huge one, and computes an `int` from their sum: undefined behaviour when it
+/// overflows). `binary` tells whether the file is a binary OFF file.
+inline bool off_binary_counts_bad(std::ifstream& in, const std::string& path, std::uintmax_t file_size, bool& binary,
+                                  std::string& error)
+{
+  binary = false;
+  in.clear();
+  in.seekg(0);
+  auto skip_blanks_and_comments = [&in]()
+  {
+    for(int c = in.peek(); c != EOF; c = in.peek())
+    {
+      if(c == '#') { std::string comment; std::getline(in, comment); }
+      else if(std::isspace(c)) in.get();
+      else break;
+    }
+  };
+  // the characters of a run of letters and digits starting with `first`, and the character after it (consumed)
+  auto read_word = [&in](std::string& word, char& after)
+  {
+    after = '\0';
+    char c;
+    while(in.get(c))
+    {
+      if(!std::isalnum(static_cast<unsigned char>(c))) { after = c; return; }
+      word += c;
+    }
+  };
+  std::string keyword, word;
+  char after = '\0', first = '\0';
+  skip_blanks_and_comments();
+  read_word(keyword, after);
+  if(keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return false;
+  skip_blanks_and_comments();
+  if(!in.get(first) || std::isdigit(static_cast<unsigned char>(first))) return false;
+  word += first;
+  read_word(word, after);
+  if(word != "BINARY") return false;
+  binary = true;
+  if(after != '\n') { std::string end_of_line; std::getline(in, end_of_line); }
+  const bool n_dimensional = keyword.find('n') != std::string::npos;
+  long long count[2] = { 0, 0 };
+  for(int k = n_dimensional ? -1 : 0; k < 2; ++k)
+  {
+    unsigned char b[4];
+    if(!in.read(reinterpret_cast<char*>(b), 4)) return false;
+    const long long x = std::int32_t(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 |
+                                     std::uint32_t(b[2]) << 8 | std::uint32_t(b[3]));
+    if(k >= 0) count[k] = x;
+  }
+  if(count[0] < 0 || count[1] < 0)
+    error = "cannot read '" + path + "': malformed binary OFF header (a negative element count)";
+  else if(double(count[0] + count[1]) > double(file_size))
+    error = "cannot read '" + path + "': its header declares more elements than the file can hold";
+  else
+    return false;
+  return true;
+}
+
 /// Checks the header of an OFF or PLY file before CGAL's readers see it: the element counts it declares must
 /// fit in the file (every element takes at least one byte); in a PLY header every `property` line must
 /// follow an `element` line, element counts must be non-negative integers, vertex coordinates and normals
@@ -229,7 +293,13 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
     }
     return !too_many(total) && ply_lists_fit(in, format, elements, file_size, path, error);
   }
+  bool binary = false;
+  if(off_binary_counts_bad(in, path, file_size, binary, error)) return false;
+  if(binary) return true; // its counts are fine (or unreadable: CGAL reports it)
   if(token.size() < 3 || token.compare(token.size() - 3, 3, "OFF") != 0) return true;
+  in.clear();
+  in.seekg(0);
+  std::getline(in, line); // the first line, read into `first` above
   std::string rest;
   std::getline(first, rest);
   // the counts follow the keyword, on its line or on the next line that is not a comment
@@ -241,31 +311,6 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
   while(is_blank_or_comment(rest))
     if(!std::getline(in, rest)) return true;
   std::istringstream counts(rest);
-  std::string word;
-  if((counts >> word) && word.compare(0, 6, "BINARY") == 0)
-  {
-    // binary: the counts are big-endian 32-bit integers after the end of that line (a dimension first for
-    // nOFF); CGAL 5.5 turns a negative count into a huge one, and computes an int from the sum of the counts
-    // (undefined behaviour when it overflows)
-    const bool n_dimensional = token.find('n') != std::string::npos;
-    long long value[3] = { 0, 0, 0 };
-    for(int k = n_dimensional ? -1 : 0; k < 2; ++k)
-    {
-      unsigned char b[4];
-      if(!in.read(reinterpret_cast<char*>(b), 4)) return true;
-      const long long x = std::int32_t(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 |
-                                       std::uint32_t(b[2]) << 8 | std::uint32_t(b[3]));
-      if(k >= 0) value[k] = x;
-    }
-    if(value[0] < 0 || value[1] < 0)
-    {
-      error = "cannot read '" + path + "': malformed binary OFF header (a negative element count)";
-      return false;
-    }
-    return !too_many(double(value[0] + value[1]));
-  }
-  counts.clear();
-  counts.str(rest);
   double v = 0, f = 0;
   while(!(counts >> v >> f))
   {
