@@ -140,16 +140,12 @@ inline bool ply_lists_fit(std::istream& in, const std::string& format, const std
   return true;
 }
 
-/// For a binary OFF file, scanned as CGAL 5.5's `File_header_OFF` does (the keyword is the first run of letters
-/// and digits after blanks and comments, the character after it is consumed; then the word `BINARY`, the end of
-/// its line, and big-endian 32-bit counts, a dimension first for `nOFF`): returns `true` with a message in
-/// `error` if a count is negative or the counts declare more elements than the file can hold (CGAL turns a
-/// negative count into a huge one, and computes an `int` from their sum: undefined behaviour when it
-/// overflows). `binary` tells whether the file is a binary OFF file.
-inline bool off_binary_counts_bad(std::ifstream& in, const std::string& path, std::uintmax_t file_size, bool& binary,
-                                  std::string& error)
+/// Reads the header of an OFF file as CGAL 5.5's `File_header_OFF` does (the keyword is the first run of letters
+/// and digits after blanks and comments, and the character after it is consumed): returns whether it is a binary
+/// OFF header (the word `BINARY`, the end of its line, then big-endian 32-bit counts, a dimension first for
+/// `nOFF`); its vertex and face counts in `vertices` and `faces` (0 if the file ends before them: CGAL reports it).
+inline bool read_off_binary_counts(std::ifstream& in, long long& vertices, long long& faces)
 {
-  binary = false;
   in.clear();
   in.seekg(0);
   auto skip_blanks_and_comments = [&in]()
@@ -161,7 +157,7 @@ inline bool off_binary_counts_bad(std::ifstream& in, const std::string& path, st
       else break;
     }
   };
-  // the characters of a run of letters and digits starting with `first`, and the character after it (consumed)
+  // appends to `word` the run of letters and digits that follows, and consumes the character after it (`after`)
   auto read_word = [&in](std::string& word, char& after)
   {
     after = '\0';
@@ -182,24 +178,18 @@ inline bool off_binary_counts_bad(std::ifstream& in, const std::string& path, st
   word += first;
   read_word(word, after);
   if(word != "BINARY") return false;
-  binary = true;
   if(after != '\n') { std::string end_of_line; std::getline(in, end_of_line); }
-  const bool n_dimensional = keyword.find('n') != std::string::npos;
   long long count[2] = { 0, 0 };
-  for(int k = n_dimensional ? -1 : 0; k < 2; ++k)
+  for(int k = keyword.find('n') != std::string::npos ? -1 : 0; k < 2; ++k)
   {
     unsigned char b[4];
-    if(!in.read(reinterpret_cast<char*>(b), 4)) return false;
+    if(!in.read(reinterpret_cast<char*>(b), 4)) return true;
     const long long x = std::int32_t(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 |
                                      std::uint32_t(b[2]) << 8 | std::uint32_t(b[3]));
     if(k >= 0) count[k] = x;
   }
-  if(count[0] < 0 || count[1] < 0)
-    error = "cannot read '" + path + "': malformed binary OFF header (a negative element count)";
-  else if(double(count[0] + count[1]) > double(file_size))
-    error = "cannot read '" + path + "': its header declares more elements than the file can hold";
-  else
-    return false;
+  vertices = count[0];
+  faces = count[1];
   return true;
 }
 
@@ -212,7 +202,9 @@ inline bool off_binary_counts_bad(std::ifstream& in, const std::string& path, st
 /// fails (`std::bad_alloc`, or an abort under AddressSanitizer) on absurd counts, and its PLY reader
 /// dereferences the last element of an empty list on a property without element, and a null pointer on
 /// integer or list coordinates (segmentation faults in Release; assertions otherwise).
-/// In a binary OFF header the counts must not be negative. Other formats are not checked.
+/// A binary OFF header (see `read_off_binary_counts()`) must declare non-negative counts that fit in the file too
+/// (CGAL turns a negative count into a huge one, and computes an `int` from their sum: undefined behaviour when it
+/// overflows). Other formats are not checked.
 inline bool check_file_header(const std::string& path, std::uintmax_t file_size, std::string& error)
 {
   std::ifstream in(path, std::ios::binary);
@@ -293,9 +285,13 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
     }
     return !too_many(total) && ply_lists_fit(in, format, elements, file_size, path, error);
   }
-  bool binary = false;
-  if(off_binary_counts_bad(in, path, file_size, binary, error)) return false;
-  if(binary) return true; // its counts are fine (or unreadable: CGAL reports it)
+  long long vertices = 0, faces = 0;
+  if(read_off_binary_counts(in, vertices, faces))
+  {
+    if(vertices >= 0 && faces >= 0) return !too_many(double(vertices + faces));
+    error = "cannot read '" + path + "': malformed binary OFF header (a negative element count)";
+    return false;
+  }
   if(token.size() < 3 || token.compare(token.size() - 3, 3, "OFF") != 0) return true;
   in.clear();
   in.seekg(0);
@@ -308,8 +304,6 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
     const std::size_t i = l.find_first_not_of(" \t\r");
     return i == std::string::npos || l[i] == '#';
   };
-  while(is_blank_or_comment(rest))
-    if(!std::getline(in, rest)) return true;
   std::istringstream counts(rest);
   double v = 0, f = 0;
   while(!(counts >> v >> f))

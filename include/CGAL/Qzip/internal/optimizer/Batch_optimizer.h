@@ -320,8 +320,9 @@ private:
     const int ds = ctx.defect_at(is);
     std::size_t unmet3 = singular_of_sign[0] - (ds < 0 ? 1 : 0), unmet5 = singular_of_sign[1] - (ds > 0 ? 1 : 0);
     std::vector<std::size_t> partners; // by their places in the queue
-    // takes the singular vertex at place q of the queue as a partner if it may be one; returns whether the
-    // search is over
+    // whether no vertex left could be taken
+    auto over = [&]() { return (n3 >= k || unmet3 == 0) && (n5 >= k || unmet5 == 0); };
+    // takes the singular vertex at place q of the queue as a partner if it may be one; returns over()
     auto meet = [&](std::size_t q)
     {
       const int v = index_queue[q];
@@ -333,10 +334,10 @@ private:
       else if(!usable && others < 2 * k && ((d < 0 && n3 < k) || (d > 0 && n5 < k)))
       { ++others; partners.push_back(q); } // boundary/feature defects
       --(d < 0 ? unmet3 : unmet5);
-      return (n3 >= k || unmet3 == 0) && (n5 >= k || unmet5 == 0);
+      return over();
     };
-    bool over = (unmet3 == 0 || k == 0) && (unmet5 == 0 || k == 0);
-    for(std::size_t i = 0; i < index_queue.size() && !over; ++i)
+    bool done = over();
+    for(std::size_t i = 0; i < index_queue.size() && !done; ++i)
     {
       const int v = index_queue[i];
       if(v != is && !ctx.is_passable_at(v)) continue;
@@ -346,7 +347,7 @@ private:
         search_visit[std::size_t(*w)] = search_round;
         index_queue.push_back(*w);
         queue_parent.push_back(int(i));
-        if(ctx.defect_at(*w) != 0 && meet(index_queue.size() - 1)) { over = true; break; }
+        if(ctx.defect_at(*w) != 0 && meet(index_queue.size() - 1)) { done = true; break; }
       }
     }
     std::vector<std::vector<vertex_descriptor> > paths;
