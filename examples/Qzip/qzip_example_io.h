@@ -12,6 +12,8 @@
 #ifndef CGAL_QZIP_EXAMPLE_IO_H
 #define CGAL_QZIP_EXAMPLE_IO_H
 
+#include "qzip_example_ply_check.h"
+
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -51,93 +53,6 @@ inline bool same_file(const std::string& a, const std::string& b)
   if(::stat(a.c_str(), &sa) != 0 || ::stat(b.c_str(), &sb) != 0)
     return false;
   return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
-}
-
-/// The declarations of a PLY header that the data must follow: the elements, their counts and properties.
-struct Ply_element
-{
-  std::string name;
-  double count = 0;
-  std::vector<std::pair<std::string, std::string> > properties; // (count type, item type); count type empty for a scalar
-};
-
-/// The size in bytes of a PLY scalar type, 0 for an unknown one.
-inline std::size_t ply_type_size(const std::string& type)
-{
-  if(type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-  if(type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-  if(type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" || type == "float32") return 4;
-  if(type == "double" || type == "float64") return 8;
-  return 0;
-}
-
-/// Reads a PLY list count of type `type` from binary data (`big_endian` or little endian); -1 if it cannot.
-inline double read_binary_ply_count(std::istream& in, const std::string& type, bool big_endian)
-{
-  const std::size_t size = ply_type_size(type);
-  unsigned char bytes[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-  if(size == 0 || size > 4 || !in.read(reinterpret_cast<char*>(bytes), std::streamsize(size))) return -1;
-  std::uint32_t u = 0;
-  for(std::size_t i = 0; i < size; ++i) u |= std::uint32_t(bytes[big_endian ? size - 1 - i : i]) << (8 * i);
-  const bool is_signed = type == "char" || type == "short" || type == "int" || type == "int8" || type == "int16" || type == "int32";
-  if(is_signed && (u >> (8 * size - 1)) != 0) return -1; // negative
-  return double(u);
-}
-
-/// Checks that the data of a PLY file (`in` positioned after its header) holds every element its header
-/// declares, and that no list declares more items than the file can hold: CGAL 5.5's reader resizes a vector
-/// to the declared count before reading the items (a list count of 4 billion in a file of a few hundred bytes
-/// allocates 16 GB). A file whose data ends early is refused too: the reader would fail on it, and where its
-/// reading of a garbled header differs from this one, the data it reads is not the data checked here.
-inline bool ply_lists_fit(std::istream& in, const std::string& format, const std::vector<Ply_element>& elements,
-                          std::uintmax_t file_size, const std::string& path, std::string& error)
-{
-  const bool ascii = format == "ascii", big_endian = format == "binary_big_endian";
-  if(!ascii && !big_endian && format != "binary_little_endian") return true;
-  auto refuse = [&](const std::string& why)
-  {
-    error = "cannot read '" + path + "': " + why;
-    return false;
-  };
-  const std::string ends_early = "the PLY data ends before the elements its header declares";
-  // An ASCII value is read as the reader reads it (an integer type as an integer, `>>` stopping where the
-  // number does): after a value it cannot read, the reader's stream fails and it takes an uninitialized
-  // count for the next list.
-  auto read_ascii_value = [&](const std::string& type, double& value)
-  {
-    if(type.find("float") != std::string::npos || type == "double")
-      return bool(in >> value);
-    long long integer = 0;
-    if(!(in >> integer)) return false;
-    value = double(integer);
-    return true;
-  };
-  const std::string unreadable = "the PLY data has a value that is not a number of its type";
-  for(const Ply_element& element : elements)
-    for(double row = 0; row < element.count; ++row)
-      for(const std::pair<std::string, std::string>& property : element.properties)
-      {
-        double items = 1, value = 0;
-        if(!property.first.empty())
-        {
-          if(ascii && !read_ascii_value(property.first, items)) return refuse(in.eof() ? ends_early : unreadable);
-          if(!ascii) items = read_binary_ply_count(in, property.first, big_endian);
-          if(!in) return refuse(ends_early);
-          if(!(items >= 0) || items > double(file_size))
-            return refuse("a list of element '" + element.name + "' declares more items than the file can hold");
-        }
-        if(ascii)
-        {
-          for(double k = 0; k < items; ++k)
-            if(!read_ascii_value(property.second, value)) return refuse(in.eof() ? ends_early : unreadable);
-          continue;
-        }
-        const std::streamoff at = in.tellg();
-        const double bytes = items * double(ply_type_size(property.second));
-        if(at < 0 || double(at) + bytes > double(file_size)) return refuse(ends_early);
-        in.seekg(std::streamoff(bytes), std::ios::cur);
-      }
-  return true;
 }
 
 /// Reads the header of an OFF file as CGAL 5.5's `File_header_OFF` does (the keyword is the first run of letters
@@ -193,18 +108,13 @@ inline bool read_off_binary_counts(std::ifstream& in, long long& vertices, long 
   return true;
 }
 
-/// Checks the header of an OFF or PLY file before CGAL's readers see it: the element counts it declares must
-/// fit in the file (every element takes at least one byte); in a PLY header every `property` line must
-/// follow an `element` line, element counts must be non-negative integers, vertex coordinates and normals
-/// must be `float` or `double` (not lists), the header must end with `end_header`, and the data must hold
-/// the declared elements with no list longer than the file (see `ply_lists_fit()`). CGAL 5.5's readers
-/// reserve memory for the declared counts before reading, which
-/// fails (`std::bad_alloc`, or an abort under AddressSanitizer) on absurd counts, and its PLY reader
-/// dereferences the last element of an empty list on a property without element, and a null pointer on
-/// integer or list coordinates (segmentation faults in Release; assertions otherwise).
-/// A binary OFF header (see `read_off_binary_counts()`) must declare non-negative counts that fit in the file too
-/// (CGAL turns a negative count into a huge one, and computes an `int` from their sum: undefined behaviour when it
-/// overflows). Other formats are not checked.
+/// Checks an OFF or PLY file before CGAL's readers see it. A PLY file goes through `check_ply_file()`
+/// (qzip_example_ply_check.h: its header read as CGAL 5.5's reader reads it, then its data). An OFF file
+/// must declare element counts that fit in the file (every element takes at least one byte): CGAL 5.5's
+/// readers reserve memory for the declared counts before reading, which fails (`std::bad_alloc`, or an
+/// abort under AddressSanitizer) on absurd counts. A binary OFF header (see `read_off_binary_counts()`)
+/// must declare non-negative counts that fit in the file too (CGAL turns a negative count into a huge one,
+/// and computes an `int` from their sum: undefined behaviour when it overflows). Other formats are not checked.
 inline bool check_file_header(const std::string& path, std::uintmax_t file_size, std::string& error)
 {
   std::ifstream in(path, std::ios::binary);
@@ -220,70 +130,12 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
   if(!(first >> token)) return true;
   if(token == "ply")
   {
-    double total = 0;
-    bool element_seen = false, header_ended = false;
-    int line_number = 0; // after the first
-    std::string element, type, format;
-    std::vector<Ply_element> elements;
-    while(std::getline(in, line))
-    {
-      std::istringstream is(line);
-      std::string keyword, name;
-      double count = 0;
-      if(!(is >> keyword)) continue;
-      if(keyword == "end_header") { header_ended = true; break; }
-      if(++line_number == 1) is >> format; // CGAL's reader takes the format from the second line, whatever its keyword
-      if(keyword == "element")
-      {
-        element_seen = true;
-        element.clear();
-        elements.emplace_back();
-        if(is >> element >> count)
-        {
-          elements.back().name = element;
-          elements.back().count = count;
-          // CGAL 5.5's reader turns a negative count into a huge unsigned one and loops over it
-          if(count < 0 || count != std::floor(count))
-          {
-            error = "cannot read '" + path + "': malformed PLY header (element '" + element
-                    + "' has a count that is not a non-negative integer)";
-            return false;
-          }
-          total += count;
-        }
-      }
-      else if(keyword == "property" && !element_seen)
-      {
-        error = "cannot read '" + path + "': malformed PLY header (a property before any element)";
-        return false;
-      }
-      else if(keyword == "property" && (is >> type))
-      {
-        // `property <type> <name>` or `property list <count type> <item type> <name>`
-        const bool list = type == "list";
-        std::string count_type;
-        if(list) is >> count_type >> type;
-        is >> name;
-        // the reader skips properties of unknown types (and lists with a floating-point count)
-        if(ply_type_size(type) != 0 && (!list || (ply_type_size(count_type) != 0 && ply_type_size(count_type) <= 4 &&
-                                                  count_type.find("float") == std::string::npos)))
-          elements.back().properties.emplace_back(count_type, type);
-        if(element != "vertex") continue;
-        if((name == "x" || name == "y" || name == "z" || name == "nx" || name == "ny" || name == "nz") &&
-           (list || (type != "float" && type != "float32" && type != "double" && type != "float64")))
-        {
-          error = "cannot read '" + path + "': vertex property '" + name + "' is of type '" + (list ? "list of " : "")
-                  + type + "' (float or double expected)";
-          return false;
-        }
-      }
-    }
-    if(!header_ended)
-    {
-      error = "cannot read '" + path + "': malformed PLY header (no end_header line)";
-      return false;
-    }
-    return !too_many(total) && ply_lists_fit(in, format, elements, file_size, path, error);
+    in.clear();
+    in.seekg(0);
+    std::string why;
+    if(check_ply_file(in, file_size, why)) return true;
+    error = "cannot read '" + path + "': " + why;
+    return false;
   }
   long long vertices = 0, faces = 0;
   if(read_off_binary_counts(in, vertices, faces))
