@@ -129,11 +129,19 @@ inline bool read_ply_header(std::istream& in, std::string& format, std::vector<P
   return false;
 }
 
-/// Reads one value of PLY type `type` from ASCII data as a number. An integer must lie in the range of its
-/// type: CGAL's reader would fail on it (its stream then stays failed and it takes uninitialized counts) or
-/// wrap it around (then its reading of the data is not this one).
+/// Reads one value of PLY type `type` from ASCII data as CGAL 5.5's reader does, with `operator>>` on a value
+/// of that type: a `float` is read as a `float` (`1e39` fails, as a `double` it would not). An integer must lie
+/// in the range of its type: CGAL's reader would fail on it (its stream then stays failed and it takes
+/// uninitialized counts) or wrap it around (then its reading of the data is not this one).
 inline bool read_ply_ascii_value(std::istream& in, const std::string& type, double& value)
 {
+  if(type == "float" || type == "float32")
+  {
+    float f = 0;
+    if(!(in >> f)) return false;
+    value = double(f);
+    return true;
+  }
   if(ply_is_floating_point(type)) return bool(in >> value);
   long long integer = 0;
   if(!(in >> integer)) return false;
