@@ -165,6 +165,8 @@ returns the singularity type of `v` given by the sign of `vertex_defect(v, pm, n
 
 \tparam PolygonMesh a model of `FaceGraph`
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+\param v a vertex of `pm`
+\param pm the polygon mesh
 \param np the same named parameters as `vertex_defect()`
 */
 template <typename PolygonMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -186,6 +188,8 @@ computes `vertex_defect(v, pm, np)` for every vertex `v` of `pm` in one pass and
 \tparam VertexDefectMap a model of `WritablePropertyMap` with `boost::graph_traits<PolygonMesh>::%vertex_descriptor`
         as key type and `int` as value type (e.g. `get(CGAL::dynamic_vertex_property_t<int>(), pm)`)
 \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+\param pm the polygon mesh
+\param defect_map the property map that receives the defect of every vertex
 \param np the same named parameters as `vertex_defect()`
 \returns the number of vertices with a non-zero defect
 */
