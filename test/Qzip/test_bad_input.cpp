@@ -281,8 +281,63 @@ void test_file(const std::string& dir, const std::string& name, const std::strin
 
 } // namespace
 
+/// The PLY header is read as CGAL 5.5's reader reads it (examples/Qzip/qzip_example_ply_check.h): element
+/// counts as unsigned integers (the reader takes `8ent` as 8), the format from line 2 whatever its first word,
+/// unknown keywords ignored, properties of unknown types skipped; refused where the reader fails or goes astray.
+void test_ply_header_as_cgal_reads_it()
+{
+  auto read = [](const std::string& header, std::string& format, std::vector<qzip_example::Ply_element>& elements,
+                 std::string& why)
+  {
+    std::istringstream in(header);
+    return qzip_example::read_ply_header(in, format, elements, why);
+  };
+  std::string format, why;
+  std::vector<qzip_example::Ply_element> elements;
+  const bool garbled = read("ply\nformatx binary_little_endian 1.0\nelement vertex 8ent vertex 9\nproperty float x\n"
+                            "pvoperty float y\nproperty fmoa w\nend_head 1\nelement face 2\n"
+                            "property list uchar int vertex_indices\nproperty list float int bad\nend_header\n",
+                            format, elements, why);
+  assert(garbled);
+  assert(format == "binary_little_endian");
+  assert(elements.size() == 2);
+  assert(elements[0].name == "vertex" && elements[0].count == 8 && elements[0].properties.size() == 1);
+  assert(elements[1].name == "face" && elements[1].count == 2 && elements[1].properties.size() == 1);
+  assert(elements[1].properties[0] == std::make_pair(std::string("uchar"), std::string("int")));
+  // what the reader fails on, or misreads
+  for(const char* header : { "ply\nformat ascii\nend_header\n",                              // no version
+                             "ply\nformat utf8 1.0\nend_header\n",                           // unknown format
+                             "ply\nformat ascii 1.0\n\nend_header\n",                         // empty line
+                             "ply\nformat ascii 1.0\nelement vertex -3\nend_header\n",        // negative count
+                             "ply\nformat ascii 1.0\nelement vertex\nend_header\n",           // no count
+                             "ply\nformat ascii 1.0\nproperty float x\nend_header\n",         // no element
+                             "ply\nformat ascii 1.0\nelement vertex 1\nproperty float\nend_header\n",
+                             "ply\nformat ascii 1.0\nelement vertex 1\nproperty uchar x\nend_header\n",
+                             "ply\nformat ascii 1.0\nelement vertices 1\nproperty list uchar float y\nend_header\n",
+                             "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n" })  // no end_header
+  {
+    why.clear();
+    assert(!read(header, format, elements, why));
+    assert(!why.empty());
+  }
+  // the data is read as the reader reads it: a float as a float, integers within their type's range
+  auto data_fits = [&](const std::string& header, const std::string& data)
+  {
+    std::istringstream in(header + data);
+    if(!qzip_example::read_ply_header(in, format, elements, why)) return false;
+    return qzip_example::ply_data_fits(in, format, elements, std::uintmax_t(header.size() + data.size()), why);
+  };
+  const std::string triangle = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  assert(data_fits(triangle, "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  assert(!data_fits(triangle, "0 0 0\n1 0 0\n0 1 1e39\n3 0 1 2\n"));   // not a float
+  assert(!data_fits(triangle, "0 0 0\n1 0 0\n0 1 0\n300 0 1 2\n"));    // not a uchar
+  assert(!data_fits(triangle, "0 0 0\n1 0 0\n0 1 0\n3 0 1\n"));        // ends early
+}
+
 int main(int argc, char** argv)
 {
+  test_ply_header_as_cgal_reads_it();
   const std::string dir = (argc > 1) ? argv[1] : "data/bad";
   const std::map<std::string, std::string> expected = read_manifest(dir);
   const std::vector<std::string> names = list_directory(dir);
