@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <new>
@@ -55,56 +56,154 @@ inline bool same_file(const std::string& a, const std::string& b)
   return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
+/// The prefixes of an OFF keyword, `[ST][C][N][4][n]` before `OFF` or `SKEL`, as CGAL 5.5's `File_header_OFF`
+/// reads them; `valid` is false for any other keyword.
+struct Off_keyword
+{
+  bool valid = false, off = false, textures = false, colors = false, normals = false, homogeneous = false,
+       dimension = false;
+};
+
+inline Off_keyword parse_off_keyword(const std::string& keyword)
+{
+  Off_keyword k;
+  std::size_t j = 0;
+  auto prefix = [&](const char* p)
+  {
+    const std::size_t n = std::strlen(p);
+    if(keyword.compare(j, n, p) != 0) return false;
+    j += n;
+    return true;
+  };
+  k.textures = prefix("ST");
+  k.colors = prefix("C");
+  k.normals = prefix("N");
+  k.homogeneous = prefix("4");
+  k.dimension = prefix("n");
+  k.off = keyword.compare(j, std::string::npos, "OFF") == 0;
+  k.valid = k.off || keyword.compare(j, std::string::npos, "SKEL") == 0;
+  return k;
+}
+
+/// Reads a big-endian 32-bit integer, as CGAL's binary OFF reader does.
+inline bool read_big_endian_int32(std::istream& in, std::int32_t& x)
+{
+  unsigned char b[4];
+  if(!in.read(reinterpret_cast<char*>(b), 4)) return false;
+  x = std::int32_t(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 | std::uint32_t(b[2]) << 8 | std::uint32_t(b[3]));
+  return true;
+}
+
+/// What `read_off_binary_header()` reads of a binary OFF header.
+struct Off_binary_header
+{
+  Off_keyword keyword;
+  long long vertices = 0, faces = 0; // 0 if the file ends before them (CGAL reports it)
+  bool complete = false;             // all its counts were read: the data follows
+  int floats_per_vertex = 3;         // what CGAL's scanner reads of each vertex (see `off_binary_faces_fit()`)
+};
+
 /// Reads the header of an OFF file as CGAL 5.5's `File_header_OFF` does (the keyword is the first run of letters
 /// and digits after blanks and comments, and the character after it is consumed): returns whether it is a binary
-/// OFF header (the word `BINARY`, the end of its line, then big-endian 32-bit counts, a dimension first for
-/// `nOFF`); its vertex and face counts in `vertices` and `faces` (0 if the file ends before them: CGAL reports it).
-inline bool read_off_binary_counts(std::ifstream& in, long long& vertices, long long& faces)
+/// header, `[ST][C][N][4][n]OFF` or `SKEL` then the word `BINARY` and the end of its line, then big-endian 32-bit
+/// counts: a dimension for `n`, the vertices, the faces, and the edges for `OFF`. Leaves `in` after them.
+/// Skips blanks and comment lines (`#` to the end of the line), as CGAL 5.5's `skip_comment_OFF` does.
+inline void skip_off_blanks_and_comments(std::istream& in)
+{
+  for(int c = in.peek(); c != EOF; c = in.peek())
+  {
+    if(c == '#') { std::string comment; std::getline(in, comment); }
+    else if(std::isspace(c)) in.get();
+    else break;
+  }
+}
+
+/// Appends to `word` the run of letters and digits that follows, and consumes the character after it (`after`),
+/// as CGAL 5.5's `File_header_OFF` reads its keywords.
+inline void read_off_word(std::istream& in, std::string& word, char& after)
+{
+  after = '\0';
+  char c;
+  while(in.get(c))
+  {
+    if(!std::isalnum(static_cast<unsigned char>(c))) { after = c; return; }
+    word += c;
+  }
+}
+
+/// The keyword of an OFF file as CGAL 5.5's `File_header_OFF` reads it (the first run of letters and digits after
+/// blanks and comments; the character after it is consumed). Reads from the start of `in`.
+inline std::string read_off_keyword(std::istream& in)
 {
   in.clear();
   in.seekg(0);
-  auto skip_blanks_and_comments = [&in]()
-  {
-    for(int c = in.peek(); c != EOF; c = in.peek())
-    {
-      if(c == '#') { std::string comment; std::getline(in, comment); }
-      else if(std::isspace(c)) in.get();
-      else break;
-    }
-  };
-  // appends to `word` the run of letters and digits that follows, and consumes the character after it (`after`)
-  auto read_word = [&in](std::string& word, char& after)
-  {
-    after = '\0';
-    char c;
-    while(in.get(c))
-    {
-      if(!std::isalnum(static_cast<unsigned char>(c))) { after = c; return; }
-      word += c;
-    }
-  };
-  std::string keyword, word;
+  skip_off_blanks_and_comments(in);
+  std::string keyword;
+  char after;
+  read_off_word(in, keyword, after);
+  return keyword;
+}
+
+inline bool read_off_binary_header(std::istream& in, Off_binary_header& header)
+{
+  header.keyword = parse_off_keyword(read_off_keyword(in));
+  if(!header.keyword.valid) return false;
+  std::string word;
   char after = '\0', first = '\0';
-  skip_blanks_and_comments();
-  read_word(keyword, after);
-  if(keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return false;
-  skip_blanks_and_comments();
+  skip_off_blanks_and_comments(in);
   if(!in.get(first) || std::isdigit(static_cast<unsigned char>(first))) return false;
   word += first;
-  read_word(word, after);
+  read_off_word(in, word, after);
   if(word != "BINARY") return false;
   if(after != '\n') { std::string end_of_line; std::getline(in, end_of_line); }
-  long long count[2] = { 0, 0 };
-  for(int k = keyword.find('n') != std::string::npos ? -1 : 0; k < 2; ++k)
+  const Off_keyword& kw = header.keyword; // binary colors are not read by CGAL's reader
+  const int h = kw.homogeneous ? 1 : 0;
+  header.floats_per_vertex = 3 + h + (kw.normals ? 3 + h : 0) + (kw.textures ? 2 + h : 0);
+  long long count[3] = { 0, 0, 0 };
+  for(int k = kw.dimension ? -1 : 0; k < (kw.off ? 3 : 2); ++k)
   {
-    unsigned char b[4];
-    if(!in.read(reinterpret_cast<char*>(b), 4)) return true;
-    const long long x = std::int32_t(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 |
-                                     std::uint32_t(b[2]) << 8 | std::uint32_t(b[3]));
+    std::int32_t x = 0;
+    if(!read_big_endian_int32(in, x)) return true;
     if(k >= 0) count[k] = x;
   }
-  vertices = count[0];
-  faces = count[1];
+  header.vertices = count[0];
+  header.faces = count[1];
+  header.complete = true;
+  return true;
+}
+
+/// Walks the data of a binary OFF file (`in` just after its header) as CGAL 5.5's reader reads it: each vertex is
+/// `header.floats_per_vertex` floats, each face a 32-bit count then that many indices (colors are not read).
+/// The reader resizes each face to its count before reading its indices: a face that declares more indices than
+/// the rest of the file can hold, a negative count, or data that ends before the last count (the reader then
+/// takes an uninitialized one) is refused (`false`, the reason in `why`).
+inline bool off_binary_faces_fit(std::istream& in, const Off_binary_header& header, std::uintmax_t file_size,
+                                 std::string& why)
+{
+  if(!header.complete) return true;
+  const std::streamoff data = in.tellg();
+  if(data < 0) return true;
+  std::uintmax_t at = std::uintmax_t(data) + std::uintmax_t(header.vertices) * 4 * std::uintmax_t(header.floats_per_vertex);
+  for(long long f = 0; f < header.faces; ++f)
+  {
+    // at the end of the file, the reader takes the count it could not read from an uninitialized integer
+    if(at + 4 > file_size)
+    {
+      why = "the binary OFF data ends before the faces its header declares";
+      return false;
+    }
+    in.seekg(std::streamoff(at));
+    std::int32_t n = 0;
+    if(!read_big_endian_int32(in, n)) return true;
+    at += 4;
+    if(n < 0 || std::uintmax_t(n) * 4 > file_size - at)
+    {
+      why = n < 0 ? "a face of the binary OFF data has a negative number of vertices"
+                  : "a face of the binary OFF data declares more vertices than the file can hold";
+      return false;
+    }
+    at += std::uintmax_t(n) * 4;
+  }
   return true;
 }
 
@@ -112,9 +211,10 @@ inline bool read_off_binary_counts(std::ifstream& in, long long& vertices, long 
 /// (qzip_example_ply_check.h: its header read as CGAL 5.5's reader reads it, then its data). An OFF file
 /// must declare element counts that fit in the file (every element takes at least one byte): CGAL 5.5's
 /// readers reserve memory for the declared counts before reading, which fails (`std::bad_alloc`, or an
-/// abort under AddressSanitizer) on absurd counts. A binary OFF header (see `read_off_binary_counts()`)
+/// abort under AddressSanitizer) on absurd counts. A binary OFF header (see `read_off_binary_header()`)
 /// must declare non-negative counts that fit in the file too (CGAL turns a negative count into a huge one,
-/// and computes an `int` from their sum: undefined behaviour when it overflows). Other formats are not checked.
+/// and computes an `int` from their sum: undefined behaviour when it overflows), and each face of its data
+/// no more vertices than the rest of the file can hold (see `off_binary_faces_fit()`). Other formats are not checked.
 inline bool check_file_header(const std::string& path, std::uintmax_t file_size, std::string& error)
 {
   std::ifstream in(path, std::ios::binary);
@@ -137,35 +237,38 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
     error = "cannot read '" + path + "': " + why;
     return false;
   }
-  long long vertices = 0, faces = 0;
-  if(read_off_binary_counts(in, vertices, faces))
+  Off_binary_header binary;
+  if(read_off_binary_header(in, binary))
   {
-    if(vertices >= 0 && faces >= 0) return !too_many(double(vertices + faces));
-    error = "cannot read '" + path + "': malformed binary OFF header (a negative element count)";
+    if(binary.vertices < 0 || binary.faces < 0)
+    {
+      error = "cannot read '" + path + "': malformed binary OFF header (a negative element count)";
+      return false;
+    }
+    if(too_many(double(binary.vertices + binary.faces))) return false;
+    std::string why;
+    if(off_binary_faces_fit(in, binary, file_size, why)) return true;
+    error = "cannot read '" + path + "': " + why;
     return false;
   }
-  if(token.size() < 3 || token.compare(token.size() - 3, 3, "OFF") != 0) return true;
-  in.clear();
-  in.seekg(0);
-  std::getline(in, line); // the first line, read into `first` above
-  std::string rest;
-  std::getline(first, rest);
-  // the counts follow the keyword, on its line or on the next line that is not a comment
-  auto is_blank_or_comment = [](const std::string& l)
+  const std::string keyword = read_off_keyword(in);
+  const Off_keyword kw = parse_off_keyword(keyword);
+  if(!kw.valid) return true; // CGAL's reader fails on it
+  if(kw.textures)
   {
-    const std::size_t i = l.find_first_not_of(" \t\r");
-    return i == std::string::npos || l[i] == '#';
-  };
-  std::istringstream counts(rest);
-  double v = 0, f = 0;
-  while(!(counts >> v >> f))
-  {
-    if(!std::getline(in, line)) return true;
-    if(is_blank_or_comment(line)) continue;
-    counts.clear();
-    counts.str(line);
+    // CGAL 5.5's ASCII scanner reads texture coordinates at an index it leaves uninitialized without the C prefix,
+    // and unchecked with it (a segmentation fault on a short line)
+    error = "cannot read '" + path + "': texture coordinates in an ASCII OFF file (" + keyword + ") are not supported";
+    return false;
   }
-  return !too_many((v > 0 ? v : 0) + (f > 0 ? f : 0));
+  // the counts, read as CGAL reads them: a dimension first for `n`, then the vertices and the faces
+  double count[3] = { 0, 0, 0 };
+  for(int k = kw.dimension ? 0 : 1; k < 3; ++k)
+  {
+    skip_off_blanks_and_comments(in);
+    if(!(in >> count[k])) return true; // CGAL's reader fails on it
+  }
+  return !too_many((count[1] > 0 ? count[1] : 0) + (count[2] > 0 ? count[2] : 0));
 }
 
 /// Checks that every face index of the file refers to an existing vertex. CGAL 5.5's OBJ and PLY readers
