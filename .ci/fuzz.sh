@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # CI, after the sanitizer run: builds the libFuzzer harness test/Qzip/fuzz/fuzz_qzip.cpp with clang
 # (installed with apt-get if missing) and fuzzes 60000 inputs from a fixed seed (QZIP_FUZZ_RUNS, QZIP_FUZZ_SEED;
-# at most QZIP_FUZZ_SECONDS, default 120: well above the 30-40 s the 60000 inputs take on a CI machine, so that
-# every run tries the same inputs; a cap that cut the run short made its coverage depend on the machine's speed)
+# at most QZIP_FUZZ_SECONDS, default 120: well above the 30-60 s the 60000 inputs take on a CI machine, so that
+# every run tries all of them; a cap that cut the run short made its coverage depend on the machine's speed. The
+# inputs still vary a little from run to run with the same seed (two runs: 1352 and 1355 new units), so a run may
+# find an input an earlier one did not)
 # from a seed corpus made of the bad-input corpus and two small test meshes. A crash, a leak, a hang
 # (> 10 s on one input) or a sanitizer report fails the run; the input is printed in base64 (and kept
 # under the artifact directory) so that it can be added to test/Qzip/data/bad/ (see test/Qzip/fuzz/README.md).

@@ -94,6 +94,11 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
       return false;
     }
     if(too_many(double(binary.vertices + binary.faces))) return false;
+    if(!off_edge_count_fits(double(binary.edges)))
+    {
+      error = "cannot read '" + path + "': malformed binary OFF header (an edge count out of range)";
+      return false;
+    }
     std::string why;
     if(off_binary_faces_fit(in, binary, file_size, why)) return true;
     error = "cannot read '" + path + "': " + why;
@@ -109,14 +114,17 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
     error = "cannot read '" + path + "': texture coordinates in an ASCII OFF file (" + keyword + ") are not supported";
     return false;
   }
-  // the counts, read as CGAL reads them: a dimension first for `n`, then the vertices and the faces
-  double count[3] = { 0, 0, 0 };
-  for(int k = kw.dimension ? 0 : 1; k < 3; ++k)
+  // the counts, read as CGAL reads them: a dimension first for `n`, then the vertices, the faces, and the edges for OFF
+  double count[4] = { 0, 0, 0, 0 };
+  for(int k = kw.dimension ? 0 : 1; k < (kw.off ? 4 : 3); ++k)
   {
     skip_off_blanks_and_comments(in);
-    if(!(in >> count[k])) return true; // CGAL's reader fails on it
+    if(!(in >> count[k])) return k < 3 || !too_many((count[1] > 0 ? count[1] : 0) + (count[2] > 0 ? count[2] : 0));
   }
-  return !too_many((count[1] > 0 ? count[1] : 0) + (count[2] > 0 ? count[2] : 0));
+  if(too_many((count[1] > 0 ? count[1] : 0) + (count[2] > 0 ? count[2] : 0))) return false;
+  if(off_edge_count_fits(count[3])) return true;
+  error = "cannot read '" + path + "': malformed OFF header (an edge count out of range)";
+  return false;
 }
 
 /// Checks that every face index of the file refers to an existing vertex. CGAL 5.5's OBJ and PLY readers

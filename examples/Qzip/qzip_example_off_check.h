@@ -63,7 +63,7 @@ inline bool read_big_endian_int32(std::istream& in, std::int32_t& x)
 struct Off_binary_header
 {
   Off_keyword keyword;
-  long long vertices = 0, faces = 0; // 0 if the file ends before them (CGAL reports it)
+  long long vertices = 0, faces = 0, edges = 0; // 0 if the file ends before them (CGAL reports it)
   bool complete = false;             // all its counts were read: the data follows
   int floats_per_vertex = 3;         // what CGAL's scanner reads of each vertex (see `off_binary_faces_fit()`)
 };
@@ -72,6 +72,13 @@ struct Off_binary_header
 /// and digits after blanks and comments, and the character after it is consumed): returns whether it is a binary
 /// header, `[ST][C][N][4][n]OFF` or `SKEL` then the word `BINARY` and the end of its line, then big-endian 32-bit
 /// counts: a dimension for `n`, the vertices, the faces, and the edges for `OFF`. Leaves `in` after them.
+/// Whether CGAL 5.5's `File_header_OFF` can take the edge count `edges` of an OFF header: it computes `2 * edges` in
+/// an `int` (undefined behaviour beyond).
+inline bool off_edge_count_fits(double edges)
+{
+  return edges >= -1073741824. && edges <= 1073741823.;
+}
+
 /// Skips blanks and comment lines (`#` to the end of the line), as CGAL 5.5's `skip_comment_OFF` does.
 inline void skip_off_blanks_and_comments(std::istream& in)
 {
@@ -133,6 +140,7 @@ inline bool read_off_binary_header(std::istream& in, Off_binary_header& header)
   }
   header.vertices = count[0];
   header.faces = count[1];
+  header.edges = count[2];
   header.complete = true;
   return true;
 }
