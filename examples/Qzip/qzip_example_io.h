@@ -67,64 +67,54 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
 {
   std::ifstream in(path, std::ios::binary);
   std::string line, token;
+  auto refuse = [&](const std::string& why)
+  {
+    error = "cannot read '" + path + "': " + why;
+    return false;
+  };
   auto too_many = [&](double declared)
   {
-    if(declared <= double(file_size)) return false;
-    error = "cannot read '" + path + "': its header declares more elements than the file can hold";
-    return true;
+    return declared > double(file_size) && !refuse("its header declares more elements than the file can hold");
   };
   if(!std::getline(in, line)) return true;
   std::istringstream first(line);
   if(!(first >> token)) return true;
+  std::string why;
   if(token == "ply")
   {
     in.clear();
     in.seekg(0);
-    std::string why;
-    if(check_ply_file(in, file_size, why)) return true;
-    error = "cannot read '" + path + "': " + why;
-    return false;
-  }
-  Off_binary_header binary;
-  if(read_off_binary_header(in, binary))
-  {
-    if(binary.vertices < 0 || binary.faces < 0)
-    {
-      error = "cannot read '" + path + "': malformed binary OFF header (a negative element count)";
-      return false;
-    }
-    if(too_many(double(binary.vertices + binary.faces))) return false;
-    if(!off_edge_count_fits(double(binary.edges)))
-    {
-      error = "cannot read '" + path + "': malformed binary OFF header (an edge count out of range)";
-      return false;
-    }
-    std::string why;
-    if(off_binary_faces_fit(in, binary, file_size, why)) return true;
-    error = "cannot read '" + path + "': " + why;
-    return false;
+    return check_ply_file(in, file_size, why) || refuse(why);
   }
   const std::string keyword = read_off_keyword(in);
   const Off_keyword kw = parse_off_keyword(keyword);
-  if(!kw.valid) return true; // CGAL's reader fails on it
-  if(kw.textures)
+  const std::streampos after_keyword = in.tellg();
+  Off_binary_header binary;
+  if(read_off_binary_header(in, kw, binary))
   {
-    // CGAL 5.5's ASCII scanner reads texture coordinates at an index it leaves uninitialized without the C prefix,
-    // and unchecked with it (a segmentation fault on a short line)
-    error = "cannot read '" + path + "': texture coordinates in an ASCII OFF file (" + keyword + ") are not supported";
-    return false;
+    if(binary.vertices < 0 || binary.faces < 0) return refuse("malformed binary OFF header (a negative element count)");
+    if(too_many(double(binary.vertices + binary.faces))) return false;
+    if(!off_edge_count_fits(double(binary.edges))) return refuse("malformed binary OFF header (an edge count out of range)");
+    return off_binary_faces_fit(in, binary, file_size, why) || refuse(why);
   }
+  if(!kw.valid) return true; // CGAL's reader fails on it
+  // CGAL 5.5's ASCII scanner reads texture coordinates at an index it leaves uninitialized without the C prefix,
+  // and unchecked with it (a segmentation fault on a short line)
+  if(kw.textures) return refuse("texture coordinates in an ASCII OFF file (" + keyword + ") are not supported");
   // the counts, read as CGAL reads them: a dimension first for `n`, then the vertices, the faces, and the edges for OFF
+  in.clear();
+  in.seekg(after_keyword);
   double count[4] = { 0, 0, 0, 0 };
-  for(int k = kw.dimension ? 0 : 1; k < (kw.off ? 4 : 3); ++k)
+  int k = kw.dimension ? 0 : 1;
+  for(; k < (kw.off ? 4 : 3); ++k)
   {
     skip_off_blanks_and_comments(in);
-    if(!(in >> count[k])) return k < 3 || !too_many((count[1] > 0 ? count[1] : 0) + (count[2] > 0 ? count[2] : 0));
+    if(!(in >> count[k])) break;
   }
+  if(k < 3) return true; // CGAL's reader fails on it
   if(too_many((count[1] > 0 ? count[1] : 0) + (count[2] > 0 ? count[2] : 0))) return false;
-  if(off_edge_count_fits(count[3])) return true;
-  error = "cannot read '" + path + "': malformed OFF header (an edge count out of range)";
-  return false;
+  const bool edges_read = k == 4;
+  return !edges_read || off_edge_count_fits(count[3]) || refuse("malformed OFF header (an edge count out of range)");
 }
 
 /// Checks that every face index of the file refers to an existing vertex. CGAL 5.5's OBJ and PLY readers

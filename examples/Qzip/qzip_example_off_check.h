@@ -25,8 +25,7 @@ namespace qzip_example {
 /// reads them; `valid` is false for any other keyword.
 struct Off_keyword
 {
-  bool valid = false, off = false, textures = false, colors = false, normals = false, homogeneous = false,
-       dimension = false;
+  bool valid = false, off = false, textures = false, normals = false, homogeneous = false, dimension = false;
 };
 
 inline Off_keyword parse_off_keyword(const std::string& keyword)
@@ -41,7 +40,7 @@ inline Off_keyword parse_off_keyword(const std::string& keyword)
     return true;
   };
   k.textures = prefix("ST");
-  k.colors = prefix("C");
+  prefix("C"); // colors: not read in binary OFF, and not checked in ASCII OFF
   k.normals = prefix("N");
   k.homogeneous = prefix("4");
   k.dimension = prefix("n");
@@ -62,16 +61,11 @@ inline bool read_big_endian_int32(std::istream& in, std::int32_t& x)
 /// What `read_off_binary_header()` reads of a binary OFF header.
 struct Off_binary_header
 {
-  Off_keyword keyword;
   long long vertices = 0, faces = 0, edges = 0; // 0 if the file ends before them (CGAL reports it)
   bool complete = false;             // all its counts were read: the data follows
   int floats_per_vertex = 3;         // what CGAL's scanner reads of each vertex (see `off_binary_faces_fit()`)
 };
 
-/// Reads the header of an OFF file as CGAL 5.5's `File_header_OFF` does (the keyword is the first run of letters
-/// and digits after blanks and comments, and the character after it is consumed): returns whether it is a binary
-/// header, `[ST][C][N][4][n]OFF` or `SKEL` then the word `BINARY` and the end of its line, then big-endian 32-bit
-/// counts: a dimension for `n`, the vertices, the faces, and the edges for `OFF`. Leaves `in` after them.
 /// Whether CGAL 5.5's `File_header_OFF` can take the edge count `edges` of an OFF header: it computes `2 * edges` in
 /// an `int` (undefined behaviour beyond).
 inline bool off_edge_count_fits(double edges)
@@ -116,10 +110,13 @@ inline std::string read_off_keyword(std::istream& in)
   return keyword;
 }
 
-inline bool read_off_binary_header(std::istream& in, Off_binary_header& header)
+/// Reads the rest of an OFF header as CGAL 5.5's `File_header_OFF` does, `in` just after its keyword (see
+/// `read_off_keyword()`) and `keyword` its prefixes: returns whether it is a binary header, the word `BINARY` and
+/// the end of its line, then big-endian 32-bit counts: a dimension for `n`, the vertices, the faces, and the edges
+/// for `OFF`. Leaves `in` after them.
+inline bool read_off_binary_header(std::istream& in, const Off_keyword& keyword, Off_binary_header& header)
 {
-  header.keyword = parse_off_keyword(read_off_keyword(in));
-  if(!header.keyword.valid) return false;
+  if(!keyword.valid) return false;
   std::string word;
   char after = '\0', first = '\0';
   skip_off_blanks_and_comments(in);
@@ -128,11 +125,10 @@ inline bool read_off_binary_header(std::istream& in, Off_binary_header& header)
   read_off_word(in, word, after);
   if(word != "BINARY") return false;
   if(after != '\n') { std::string end_of_line; std::getline(in, end_of_line); }
-  const Off_keyword& kw = header.keyword; // binary colors are not read by CGAL's reader
-  const int h = kw.homogeneous ? 1 : 0;
-  header.floats_per_vertex = 3 + h + (kw.normals ? 3 + h : 0) + (kw.textures ? 2 + h : 0);
+  const int h = keyword.homogeneous ? 1 : 0; // binary colors are not read by CGAL's reader
+  header.floats_per_vertex = 3 + h + (keyword.normals ? 3 + h : 0) + (keyword.textures ? 2 + h : 0);
   long long count[3] = { 0, 0, 0 };
-  for(int k = kw.dimension ? -1 : 0; k < (kw.off ? 3 : 2); ++k)
+  for(int k = keyword.dimension ? -1 : 0; k < (keyword.off ? 3 : 2); ++k)
   {
     std::int32_t x = 0;
     if(!read_big_endian_int32(in, x)) return true;
