@@ -5,7 +5,7 @@
 // usage: benchmark_optimizer [--corpus DIR] [--runs R] [--max-level L] [--skip-corpus] [--skip-large]
 //                            [--skip-genus3] [--measure] [--mesh FILE]... [--trace]
 //                            [--max-batches N] [--patience N] [--count-stop] [--seed S] [--min-level L]
-//                            [--fingerprint]
+//                            [--fingerprint] [--seeds N]
 //   --runs R       runs per mesh below 100k quads, the median time is reported (default 3)
 //   --max-level L  Catmull-Clark levels of the scaling series (default 4: ~1M quads)
 //   --min-level L  run the scaling series from this level on (default 0; the lower levels are still built)
@@ -18,6 +18,10 @@
 //   --max-batches N, --patience N  the parameters of the Default_stop_predicate of the runs (200, 20)
 //   --count-stop   stop on No_improvement_stop_predicate (fewer singularities) instead of on progress
 //   --seed S       the random seed of the runs (default 0)
+//   --seeds N      one run for each of the seeds 0 to N-1 of every selected mesh (--mesh, else the corpus),
+//                  and a table of the spread of the results (final count, faces, time to the plateau)
+// Meshes read from files are read again for every run (not copied), so a run optimizes the mesh the example
+// optimizes; the Catmull-Clark and genus-3 meshes, built in memory, are copied.
 // The summary line of each mesh on stderr also gives the median CPU time of the process (std::clock())
 // during optimize_singularities(), less sensitive than wall time to other jobs on the machine, and the
 // median CPU time until the number of singularities last changed (the plateau; the tables' last column):
@@ -41,7 +45,9 @@
 #include <functional>
 #include <iomanip>
 #include <map>
+#include <memory>
 #include <sstream>
+#include <stdexcept>
 
 using namespace qzip_test;
 namespace Q = CGAL::Qzip;
@@ -132,6 +138,7 @@ struct Row
   Q::Optimizer_statistics stats;
   double seconds = 0;
   double plateau_seconds = 0; // CPU seconds until the final number of singularities was reached (median)
+  double cpu_seconds = 0;     // CPU seconds of optimize_singularities() (median)
   std::string exact;
   std::size_t fingerprint = 0;
 };
@@ -149,20 +156,45 @@ static std::size_t singular(const Q::Mesh_report& r)
          r.number_of_boundary_negative_defects + r.number_of_boundary_positive_defects;
 }
 
-// preprocesses `input`, then optimizes copies of it `runs` times; the median time is kept
-static Row run(const std::string& name, const Mesh& input, int runs, bool measure)
+// gives a fresh copy of the input of a row, preprocessed (preprocess_valences()): read again from its file, as
+// the example optimizes it (the halfedge order of a copy differs, and so does the trajectory of a run), or
+// copied from a mesh built in memory
+typedef std::function<void(Mesh&)> Input;
+
+static Input from_file(const std::string& path)
+{
+  return [path](Mesh& m)
+  {
+    if(!read_mesh(path, m)) throw std::runtime_error("cannot read " + path + " again");
+    Q::preprocess_valences(m);
+  };
+}
+
+static Input from_memory(const Mesh& built)
+{
+  auto copy = std::make_shared<Mesh>(built);
+  return [copy](Mesh& m)
+  {
+    copy_mesh(*copy, m);
+    Q::preprocess_valences(m);
+  };
+}
+
+// optimizes the input `runs` times; the median time is kept
+static Row run(const std::string& name, const Input& input, int runs, bool measure)
 {
   Row row;
   row.name = name;
-  Mesh pre;
-  copy_mesh(input, pre);
-  Q::preprocess_valences(pre);
-  row.before = Q::compute_mesh_report(pre);
+  {
+    Mesh pre;
+    input(pre);
+    row.before = Q::compute_mesh_report(pre);
+  }
   std::vector<double> times, cpu, plateau;
   for(int i = 0; i < runs; ++i)
   {
     Mesh m;
-    copy_mesh(pre, m);
+    input(m);
     CGAL::Real_timer t;
     const std::clock_t c0 = std::clock();
     t.start();
@@ -182,7 +214,7 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
       if(measure && row.before.number_of_faces < 20000)
       {
         Mesh mm;
-        copy_mesh(pre, mm);
+        input(mm);
         Measure_visitor vis;
         vis.mesh = &mm;
         Q::optimize_singularities(mm, CGAL::parameters::random_seed(seed).visitor(std::ref(vis)));
@@ -195,6 +227,7 @@ static Row run(const std::string& name, const Mesh& input, int runs, bool measur
   std::sort(plateau.begin(), plateau.end());
   row.seconds = times[times.size() / 2];
   row.plateau_seconds = plateau[plateau.size() / 2];
+  row.cpu_seconds = cpu[cpu.size() / 2];
   std::cerr << "  " << name << ": " << singular(row.before) << " -> " << singular(row.after) << " singularities, "
             << row.before.number_of_faces << " -> " << row.after.number_of_faces << " faces, " << row.stats.batch << " batches + " << row.stats.end_game_rounds << " end-game rounds, "
             << fmt(row.seconds) << " s (CPU " << fmt(cpu[cpu.size() / 2]) << " s, final count after "
@@ -230,10 +263,47 @@ static void print_row(const Row& r, bool measure)
             << " | " << r.stats.batch << " | " << fmt(r.seconds) << " | " << fmt(r.plateau_seconds) << " |" << (measure ? " " + r.exact + " |" : "") << "\n";
 }
 
+// --seeds N: one run for each of the seeds 0 to N-1, and the spread of the results (the trajectory of a run,
+// and with it its time, depends on the seed)
+static void print_spread_header()
+{
+  std::cout << "| mesh | singularities before | after: min / median / max | faces Δ%: min / max | inverted after: max | "
+               "to plateau (CPU s): min / median / max | CPU s: min / median / max |\n"
+            << "|---|---|---|---|---|---|---|\n";
+}
+
+static void print_spread(const std::string& name, const Input& input, unsigned int seeds)
+{
+  std::vector<double> after, faces_change, plateau, cpu;
+  std::size_t before = 0, inverted = 0;
+  for(unsigned int s = 0; s < seeds; ++s)
+  {
+    seed = s;
+    const Row r = run(name + " seed " + std::to_string(s), input, 1, false);
+    before = singular(r.before);
+    after.push_back(double(singular(r.after)));
+    faces_change.push_back(100. * (double(r.after.number_of_faces) - double(r.before.number_of_faces)) /
+                           double(r.before.number_of_faces));
+    inverted = (std::max)(inverted, r.after.number_of_inverted_quads);
+    plateau.push_back(r.plateau_seconds);
+    cpu.push_back(r.cpu_seconds);
+  }
+  auto spread = [](std::vector<double> x, int precision)
+  {
+    std::sort(x.begin(), x.end());
+    return fmt(x.front(), precision) + " / " + fmt(x[x.size() / 2], precision) + " / " + fmt(x.back(), precision);
+  };
+  std::sort(faces_change.begin(), faces_change.end());
+  std::cout << "| " << name << " | " << before << " | " << spread(after, 0) << " | " << fmt(faces_change.front(), 1)
+            << " / " << fmt(faces_change.back(), 1) << " | " << inverted << " | " << spread(plateau, 2) << " | "
+            << spread(cpu, 2) << " |" << std::endl;
+}
+
 int main(int argc, char** argv)
 {
   std::string corpus = QZIP_SHARED_DATA_DIR;
   int runs = 3, max_level = 4, min_level = 0;
+  unsigned int seeds = 0;
   bool skip_corpus = false, skip_large = false, skip_genus3 = false, measure = false;
   std::vector<std::string> meshes;
   for(int i = 1; i < argc; ++i)
@@ -253,8 +323,25 @@ int main(int argc, char** argv)
     else if(a == "--patience" && i + 1 < argc) patience = std::size_t(std::atoi(argv[++i]));
     else if(a == "--count-stop") count_stop = true;
     else if(a == "--seed" && i + 1 < argc) seed = unsigned(std::atoi(argv[++i]));
+    else if(a == "--seeds" && i + 1 < argc) seeds = unsigned(std::max(1, std::atoi(argv[++i])));
     else if(a == "--mesh" && i + 1 < argc) meshes.push_back(argv[++i]);
     else { std::cerr << "error: unknown argument '" << a << "'" << std::endl; return EXIT_FAILURE; }
+  }
+
+  if(seeds > 0)
+  {
+    if(meshes.empty() && file_exists(corpus + "/SOURCES.md"))
+      for(const std::string& f : shared_corpus_files()) meshes.push_back(corpus + "/" + f);
+    if(meshes.empty()) { std::cout << "corpus not found at " << corpus << " and no --mesh: nothing to run\n"; return EXIT_SUCCESS; }
+    std::cout << "\n### Spread over seeds 0-" << seeds - 1 << " (default parameters, one run per seed)\n\n";
+    print_spread_header();
+    for(const std::string& f : meshes)
+    {
+      Mesh m;
+      if(!read_mesh(f, m)) { std::cout << "| " << f << " | unreadable |\n"; continue; }
+      print_spread(f.substr(f.find_last_of('/') + 1), from_file(f), seeds);
+    }
+    return EXIT_SUCCESS;
   }
 
   if(!meshes.empty())
@@ -265,7 +352,7 @@ int main(int argc, char** argv)
     {
       Mesh m;
       if(!read_mesh(f, m)) { std::cout << "| " << f << " | unreadable |\n"; continue; }
-      print_row(run(f, m, runs, measure), measure);
+      print_row(run(f, from_file(f), runs, measure), measure);
     }
     return EXIT_SUCCESS;
   }
@@ -282,7 +369,7 @@ int main(int argc, char** argv)
       {
         Mesh m;
         if(!read_mesh(corpus + "/" + f, m)) { std::cout << "| " << f << " | unreadable |\n"; continue; }
-        print_row(run(f, m, faces(m).size() < 100000 ? runs : 1, measure), measure);
+        print_row(run(f, from_file(corpus + "/" + f), faces(m).size() < 100000 ? runs : 1, measure), measure);
       }
     }
   }
@@ -299,7 +386,7 @@ int main(int argc, char** argv)
       if(level > 0) CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(1));
       const std::size_t n = faces(m).size();
       if(level < min_level) continue;
-      print_row(run("gargoyle CC" + std::to_string(level) + " (" + std::to_string(n) + " quads)", m, n < 100000 ? runs : 1, false), false);
+      print_row(run("gargoyle CC" + std::to_string(level) + " (" + std::to_string(n) + " quads)", from_memory(m), n < 100000 ? runs : 1, false), false);
     }
   }
 
@@ -313,7 +400,7 @@ int main(int argc, char** argv)
       make_genus3_voxel_plate(m);
       PMP::triangulate_faces(m);
       CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(levels));
-      print_row(run("genus-3 plate, triangulated, CC" + std::to_string(levels), m, runs, false), false);
+      print_row(run("genus-3 plate, triangulated, CC" + std::to_string(levels), from_memory(m), runs, false), false);
     }
   }
   return EXIT_SUCCESS;

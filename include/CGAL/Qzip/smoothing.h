@@ -230,6 +230,25 @@ public:
     return quads_quality(ring.begin(), ring.end(), pm, vpm);
   }
 
+  // whether the quads around v have no more inverted quads than `bound.first` and all a scaled Jacobian above
+  // `bound.second`; if so, `quality` is incident_quality(v). Stops at the first quad that fails.
+  bool incident_quality_beats(vertex_descriptor v, const std::pair<std::size_t, double>& bound,
+                              std::pair<std::size_t, double>& quality) const
+  {
+    std::size_t inverted = 0;
+    double worst = 1;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
+    {
+      if(is_border(h, pm) || !is_quad(h, pm)) continue;
+      const double j = quad_scaled_jacobian(face(h, pm), pm, CGAL::parameters::vertex_point_map(vpm));
+      if(j <= bound.second || (j <= 0 && ++inverted > bound.first)) return false;
+      worst = (std::min)(worst, j);
+    }
+    if(!(worst > bound.second)) return false; // no quad: worst is 1
+    quality = std::make_pair(inverted, worst);
+    return true;
+  }
+
   // the closest point to p on the reference surface (or `old`, the position of v, if it is closer)
   Point project(vertex_descriptor v, const Point& p, const Point& old)
   {
@@ -399,8 +418,8 @@ public:
           put(hint, v, old_hint);
           const Point candidate = project(v, trial, old);
           put(vpm, v, candidate);
-          const std::pair<std::size_t, double> q = incident_quality(v);
-          if(q.first <= best_quality.first && q.second > best_quality.second)
+          std::pair<std::size_t, double> q;
+          if(incident_quality_beats(v, best_quality, q))
           {
             best = candidate;
             best_quality = q;
