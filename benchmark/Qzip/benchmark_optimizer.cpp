@@ -33,6 +33,9 @@
 #include <CGAL/Qzip/optimize_singularities.h>
 #include <CGAL/Qzip/preprocess.h>
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Real_timer.h>
@@ -139,6 +142,7 @@ struct Row
   double seconds = 0;
   double plateau_seconds = 0; // CPU seconds until the final number of singularities was reached (median)
   double cpu_seconds = 0;     // CPU seconds of optimize_singularities() (median)
+  std::array<double, 3> off_surface = {{ 0, 0, 0 }}; // see off_surface()
   std::string exact;
   std::size_t fingerprint = 0;
 };
@@ -154,6 +158,31 @@ static std::size_t singular(const Q::Mesh_report& r)
 {
   return r.number_of_interior_valence_3_like + r.number_of_interior_valence_5_like +
          r.number_of_boundary_negative_defects + r.number_of_boundary_positive_defects;
+}
+
+// how far the vertices of `result` lie from the surface of `input`, in mean edge lengths of `input`: the
+// largest distance, the mean one, and the number of vertices farther than a tenth of an edge
+static std::array<double, 3> off_surface(const Mesh& input, const Mesh& result)
+{
+  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
+  double length = 0;
+  for(auto e : edges(input))
+    length += std::sqrt(CGAL::squared_distance(input.point(source(e, input)), input.point(target(e, input))));
+  length /= double(num_edges(input));
+  Mesh triangulated(input);
+  PMP::triangulate_faces(triangulated);
+  Tree tree(faces(triangulated).first, faces(triangulated).second, triangulated);
+  std::array<double, 3> out = {{ 0, 0, 0 }};
+  for(auto v : vertices(result))
+  {
+    const double d = std::sqrt(tree.squared_distance(result.point(v))) / length;
+    out[0] = (std::max)(out[0], d);
+    out[1] += d;
+    if(d > 0.1) ++out[2];
+  }
+  out[1] /= double(num_vertices(result));
+  return out;
 }
 
 // gives a fresh copy of the input of a row, preprocessed (preprocess_valences()): read again from its file, as
@@ -185,11 +214,9 @@ static Row run(const std::string& name, const Input& input, int runs, bool measu
 {
   Row row;
   row.name = name;
-  {
-    Mesh pre;
-    input(pre);
-    row.before = Q::compute_mesh_report(pre);
-  }
+  Mesh pre;
+  input(pre);
+  row.before = Q::compute_mesh_report(pre);
   std::vector<double> times, cpu, plateau;
   for(int i = 0; i < runs; ++i)
   {
@@ -211,6 +238,7 @@ static Row run(const std::string& name, const Input& input, int runs, bool measu
     {
       row.after = Q::compute_mesh_report(m);
       row.fingerprint = position_fingerprint(m);
+      row.off_surface = off_surface(pre, m);
       if(measure && row.before.number_of_faces < 20000)
       {
         Mesh mm;
@@ -240,9 +268,9 @@ static Row run(const std::string& name, const Input& input, int runs, bool measu
 static void print_header(bool measure)
 {
   std::cout << "| mesh | faces before → after (Δ%) | singularities before → after | v3 / v5 after (interior) | bound 2·|4χ| + 1% F | "
-               "min / mean SJ before | min / mean SJ after | inverted after | batches | time (s) | to plateau (CPU s) |"
+               "min / mean SJ before | min / mean SJ after | inverted after | off surface: max / mean (edges), vertices > 0.1 | batches | time (s) | to plateau (CPU s) |"
             << (measure ? " exact predictions |" : "") << "\n"
-            << "|---|---|---|---|---|---|---|---|---|---|---|" << (measure ? "---|" : "") << "\n";
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|" << (measure ? "---|" : "") << "\n";
 }
 
 static void print_row(const Row& r, bool measure)
@@ -260,6 +288,7 @@ static void print_row(const Row& r, bool measure)
   std::cout << " | " << fmt(r.before.min_scaled_jacobian) << " / " << fmt(r.before.mean_scaled_jacobian) << " | "
             << fmt(r.after.min_scaled_jacobian) << " / " << fmt(r.after.mean_scaled_jacobian) << " | "
             << r.after.number_of_inverted_quads << (r.before.number_of_inverted_quads > 0 ? " (input: " + std::to_string(r.before.number_of_inverted_quads) + ")" : std::string())
+            << " | " << fmt(r.off_surface[0], 2) << " / " << fmt(r.off_surface[1], 4) << ", " << r.off_surface[2]
             << " | " << r.stats.batch << " | " << fmt(r.seconds) << " | " << fmt(r.plateau_seconds) << " |" << (measure ? " " + r.exact + " |" : "") << "\n";
 }
 
@@ -268,14 +297,15 @@ static void print_row(const Row& r, bool measure)
 static void print_spread_header()
 {
   std::cout << "| mesh | singularities before | after: min / median / max | faces Δ%: min / max | inverted after: max | "
-               "to plateau (CPU s): min / median / max | CPU s: min / median / max |\n"
-            << "|---|---|---|---|---|---|---|\n";
+               "off surface (edges): max / largest mean | to plateau (CPU s): min / median / max | CPU s: min / median / max |\n"
+            << "|---|---|---|---|---|---|---|---|\n";
 }
 
 static void print_spread(const std::string& name, const Input& input, unsigned int seeds)
 {
   std::vector<double> after, faces_change, plateau, cpu;
   std::size_t before = 0, inverted = 0;
+  double off_max = 0, off_mean = 0;
   for(unsigned int s = 0; s < seeds; ++s)
   {
     seed = s;
@@ -287,6 +317,8 @@ static void print_spread(const std::string& name, const Input& input, unsigned i
     inverted = (std::max)(inverted, r.after.number_of_inverted_quads);
     plateau.push_back(r.plateau_seconds);
     cpu.push_back(r.cpu_seconds);
+    off_max = (std::max)(off_max, r.off_surface[0]);
+    off_mean = (std::max)(off_mean, r.off_surface[1]);
   }
   auto spread = [](std::vector<double> x, int precision)
   {
@@ -295,7 +327,8 @@ static void print_spread(const std::string& name, const Input& input, unsigned i
   };
   std::sort(faces_change.begin(), faces_change.end());
   std::cout << "| " << name << " | " << before << " | " << spread(after, 0) << " | " << fmt(faces_change.front(), 1)
-            << " / " << fmt(faces_change.back(), 1) << " | " << inverted << " | " << spread(plateau, 2) << " | "
+            << " / " << fmt(faces_change.back(), 1) << " | " << inverted << " | " << fmt(off_max, 2) << " / "
+            << fmt(off_mean, 4) << " | " << spread(plateau, 2) << " | "
             << spread(cpu, 2) << " |" << std::endl;
 }
 

@@ -552,7 +552,7 @@ void test_replanned_after_undos(const std::string& data_dir)
     settings.end_game = false;
     settings.replan_after_undos = replan == 1;
     const Q::Default_scoring scoring;
-    const Q::Batch_count_stop_predicate stop(3);
+    const Q::Batch_count_stop_predicate stop(8);
     Visitor vis;
     typedef CGAL::property_map_selector<Surface_mesh, CGAL::vertex_point_t>::type Vpm;
     Q::internal::Batch_optimizer<Surface_mesh, Vpm, Ecm, Fcm, K, Q::Default_scoring, Q::Batch_count_stop_predicate, Visitor>
@@ -563,7 +563,7 @@ void test_replanned_after_undos(const std::string& data_dir)
     assert(r.number_of_inverted_quads <= inverted && r.total_absolute_defect == stats[replan].number_of_singularities);
     tried[replan] = vis.tried;
   }
-  std::cout << "replanned after undos (gargoyle, 3 batches): " << stats[1].number_of_replanned_surgeries << " replanned, "
+  std::cout << "replanned after undos (gargoyle, 8 batches): " << stats[1].number_of_replanned_surgeries << " replanned, "
             << tried[1] << " surgeries tried, " << stats[1].number_of_skipped_surgeries << " skipped (without: "
             << tried[0] << " tried, " << stats[0].number_of_skipped_surgeries << " skipped)" << std::endl;
   assert(stats[0].number_of_replanned_surgeries == 0 && stats[1].number_of_replanned_surgeries > 0);
@@ -835,8 +835,10 @@ void test_look_ahead()
             << " singularities left" << std::endl;
   assert(kept > 0 && failed_after_executions > 0);
 
-  // in the optimizer, seeds 0-4: fewer singularities in sum with the look-ahead than without, and the paper's
-  // optimum (exactly 16 v5, no v3) reached with it on every seed
+  // in the optimizer, seeds 0-4: no more singularities in sum with the look-ahead than without, and the
+  // paper's optimum (exactly 16 v5, no v3) reached with it on every seed (since the smoother puts vertices
+  // back onto the surface, the batches alone reach it on these seeds too: the plate above, where they stop
+  // short of it, is the look-ahead's test)
   std::size_t with_sum = 0, without_sum = 0, optimum_reached = 0;
   for(unsigned int seed = 0; seed < 5; ++seed)
   {
@@ -854,7 +856,7 @@ void test_look_ahead()
     without_sum += w.number_of_singularities;
     if(r.number_of_interior_valence_5_like == 16 && r.number_of_interior_valence_3_like == 0) ++optimum_reached;
   }
-  assert(with_sum < without_sum && optimum_reached == 5);
+  assert(with_sum <= without_sum && optimum_reached == 5);
 }
 
 // The look-ahead's quality guard judges the quads a chain created or moved against those it removed or moved,
@@ -1015,13 +1017,12 @@ void test_reference_surface()
   Tree tree(triangles.begin(), triangles.end());
   CGAL::Random rng(7);
   const std::vector<Surface_mesh::Vertex_index> vs(vertices(m).begin(), vertices(m).end());
-  std::size_t answered_by_start = 0;
   for(int i = 0; i < 40000; ++i)
   {
     const Surface_mesh::Vertex_index v = vs[std::size_t(rng.get_int(0, int(vs.size())))];
     const Point& on = m.point(v);
     std::size_t& hint = vertex_hint[std::size_t(v)];
-    Point p = on, start = on;
+    Point p = on;
     switch(i % 4)
     {
       case 0: // near the surface, the hint of the previous answer
@@ -1030,21 +1031,37 @@ void test_reference_surface()
       case 1: // anywhere around, outside the bounding box too
         p = Point(rng.get_double(-1.6, 1.6), rng.get_double(-1.6, 1.6), rng.get_double(-1.6, 1.6));
         break;
-      case 2: // its own start: on the surface
+      case 2: // on the surface
         break;
       default: // a far hint
         p = Point(on.x() + rng.get_double(-0.2, 0.2), on.y() + rng.get_double(-0.2, 0.2), on.z() + rng.get_double(-0.2, 0.2));
         hint = std::size_t(rng.get_int(1, int(triangles.size()) + 1));
     }
-    const Point expected = tree.closest_point(p, start);
-    const Point got = surface.closest_point(p, start, hint);
+    const Point expected = tree.closest_point(p);
+    const Point got = surface.closest_point(p, hint);
     assert(got == expected);
     assert(hint >= 1 && hint <= triangles.size());
-    if(got == start && i % 4 == 2) ++answered_by_start;
   }
-  std::cout << "reference surface: 40000 queries on " << triangles.size() << " triangles as the AABB tree answers them ("
-            << answered_by_start << " answered by their start)" << std::endl;
-  assert(answered_by_start > 0);
+  std::cout << "reference surface: 40000 queries on " << triangles.size() << " triangles as the AABB tree answers them" << std::endl;
+
+  // The smoother puts a vertex that lies off its reference surface back onto it, even when a move of the
+  // vertex is shorter than its distance to the surface (with the vertex's position as the tree's starting
+  // point, the closest point search answered with that position, and the vertex stayed off the surface)
+  Smoother smoother(m, get(CGAL::vertex_point, m), ECM(), FCM(), true);
+  smoother.step = 0.1;
+  std::size_t off = 0;
+  for(auto v : vertices(m))
+  {
+    if(std::size_t(v) % 7 != 0 || m.point(v).x() <= -0.8) continue;
+    const Point on = m.point(v);
+    m.point(v) = on + 0.1 * (on - CGAL::ORIGIN); // outwards, about half an edge
+    assert(tree.squared_distance(m.point(v)) > 1e-4);
+    ++off;
+    smoother.smooth(std::vector<Surface_mesh::Vertex_index>(1, v), 1);
+    assert(m.point(v) != on + 0.1 * (on - CGAL::ORIGIN) && tree.squared_distance(m.point(v)) < 1e-20);
+  }
+  std::cout << "smoothing: " << off << " vertices put off the reference surface are back on it after one sweep" << std::endl;
+  assert(off > 10);
 
   Surface_mesh grid;
   make_quad_grid(grid, 40, 2);

@@ -249,15 +249,17 @@ public:
     return true;
   }
 
-  // the closest point to p on the reference surface (or `old`, the position of v, if it is closer)
-  Point project(vertex_descriptor v, const Point& p, const Point& old)
+  // the closest point to p on the reference surface, searched from the triangle of the last projection of v
+  // (or of a neighbor, for a vertex created since). Always a point of the surface: a vertex off it (one a
+  // Q-zip created or merged at a midpoint) goes back onto it at its next move, however small
+  Point project(vertex_descriptor v, const Point& p)
   {
     if(surface.empty()) return p;
     std::size_t t = get(hint, v);
     if(t == 0) // a vertex created since: the hint of a neighbor
       for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
         if((t = get(hint, source(h, pm))) != 0) break;
-    const Point q = surface.closest_point(p, old, t);
+    const Point q = surface.closest_point(p, t);
     put(hint, v, t);
     return q;
   }
@@ -331,7 +333,7 @@ public:
       {
         const Sweep_vertex& sv = sweep[i];
         const Point old = get(vpm, sv.v);
-        const Point np = sv.feature == nullptr ? project(sv.v, targets[i], old) : targets[i];
+        const Point np = sv.feature == nullptr ? project(sv.v, targets[i]) : targets[i];
         if(np == old) continue;
         // kept if the incident quads stay above the floor, or else are not worse than before
         const std::size_t first_quad = i == 0 ? 0 : sweep[i - 1].quads_end;
@@ -416,7 +418,7 @@ public:
         for(const Point& trial : trials)
         {
           put(hint, v, old_hint);
-          const Point candidate = project(v, trial, old);
+          const Point candidate = project(v, trial);
           put(vpm, v, candidate);
           std::pair<std::size_t, double> q;
           if(incident_quality_beats(v, best_quality, q))

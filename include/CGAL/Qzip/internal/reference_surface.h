@@ -27,12 +27,13 @@ namespace CGAL {
 namespace Qzip {
 namespace internal {
 
-// A triangulated surface that answers closest-point queries exactly as `CGAL::AABB_tree::closest_point(p,
-// start)` does (the closest point of the triangles, or `start` if it is closer than all of them), but
-// that first tries a uniform grid of cells (hashed into buckets) around the triangle of a previous answer
-// (the hint): when the sphere through that triangle's closest point spans a few cells and a single point
-// is closest among the triangles of their buckets, it is the tree's answer. Other queries (no hint, a large sphere, two closest
-// points at the same distance, where the tree's answer depends on its order) go to the tree.
+// A triangulated surface that answers closest-point queries exactly as `CGAL::AABB_tree::closest_point(p)`
+// does (the closest point of the triangles), but that first tries a uniform grid of cells (hashed into
+// buckets) around the triangle of a previous answer (the hint): when the sphere through that triangle's
+// closest point spans a few cells and a single point is closest among the triangles of their buckets, it is
+// the tree's answer. Other queries (no hint, a large sphere, two closest points at the same distance, where
+// the tree's answer depends on its order) go to the tree, from the hint triangle's closest point if there
+// is a hint.
 template <typename GeomTraits>
 class Reference_surface
 {
@@ -101,12 +102,13 @@ class Reference_surface
           f(bucket(i, j, k));
   }
 
-  // the tree's answer; when it is `start` (no triangle is closer), the hint stays: it was the triangle of
-  // the previous answer, near `start` (the tree would name no triangle, or the first one, anywhere)
+  // the tree's answer, searched from `start`, the closest point to p of the hint triangle, if there is a hint
+  // (a point of the surface, as the tree requires of a hint); the hint becomes the triangle of the answer
   Point fallback(const Point& p, const Point& start, std::size_t& hint) const
   {
-    const auto r = tree->closest_point_and_primitive(p, std::make_pair(start, triangles.end()));
-    if(r.second != triangles.end()) hint = std::size_t(r.second - triangles.begin()) + 1;
+    const auto r = hint == 0 ? tree->closest_point_and_primitive(p)
+                             : tree->closest_point_and_primitive(p, std::make_pair(start, triangles.begin() + std::ptrdiff_t(hint - 1)));
+    hint = std::size_t(r.second - triangles.begin()) + 1;
     return r.first;
   }
 
@@ -163,13 +165,15 @@ public:
     reached_in.assign(triangles.size(), 0);
   }
 
-  // the closest point to p as `tree.closest_point(p, start)` gives it; `hint` (1 + the index of a triangle
-  // near p, or 0) is updated to the triangle of the answer
-  Point closest_point(const Point& p, const Point& start, std::size_t& hint) const
+  // the closest point to p as `tree.closest_point(p)` gives it; `hint` (1 + the index of a triangle near p,
+  // or 0) is updated to the triangle of the answer
+  Point closest_point(const Point& p, std::size_t& hint) const
   {
-    if(hint == 0 || hint > triangles.size()) return fallback(p, start, hint);
+    if(hint > triangles.size()) hint = 0;
+    if(hint == 0) return fallback(p, p, hint);
     std::size_t best_triangle = hint - 1;
     Point best = GeomTraits().construct_projected_point_3_object()(triangles[best_triangle], p);
+    const Point start = best;
     // every triangle at most as far as `best` has its bounding box within r of p (r slightly enlarged
     // against rounding)
     const double r2 = CGAL::to_double(CGAL::squared_distance(p, best)) * (1 + 1e-9);
@@ -214,7 +218,7 @@ public:
         }
     if(tie) return fallback(p, start, hint);
     hint = best_triangle + 1;
-    return GeomTraits().compare_distance_3_object()(p, start, best) == CGAL::SMALLER ? start : best;
+    return best;
   }
 };
 
