@@ -80,9 +80,10 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
   {
     return declared > double(file_size) && !refuse("its header declares more elements than the file can hold");
   };
-  if(!std::getline(in, line)) return true;
+  // CGAL's PLY reader wants `ply` on the first line; its OFF reader skips blank lines before the keyword
+  std::getline(in, line);
   std::istringstream first(line);
-  if(!(first >> token)) return true;
+  first >> token;
   std::string why;
   if(token == "ply")
   {
