@@ -275,8 +275,9 @@ inline bool off_ascii_color_readable(const std::vector<double>& entries, std::si
 /// * a vertex `w = 0` with the `4` prefix (an assertion in the reader, a division by zero without assertions);
 /// * with the `C` prefix, a line whose color the scanner does not read safely (see `off_ascii_color_readable()`):
 ///   it takes the numbers after the coordinates (and normals, with `N`) as the color, counts them in a `std::size_t`
-///   (a line shorter than the prefixes require wraps around), and once a vertex (a face) has a color, it reads a
-///   color on every later vertex (face), from past the end of the line's numbers if there is none.
+///   (a vertex line shorter than the prefixes require wraps around, and so does the end of the file within the
+///   vertices, even without any color), and once a vertex (a face) has a color, it reads a color on every later
+///   vertex (face), from past the end of the line's numbers if there is none.
 inline bool off_ascii_data_fits(std::istream& in, const Off_keyword& keyword, const Off_ascii_header& header,
                                 std::string& why)
 {

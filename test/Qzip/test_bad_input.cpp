@@ -393,6 +393,7 @@ void test_off_ascii_lines_as_cgal_reads_them()
         "COFF\n4 1 0\n0 0 0 255 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n",                 // vertex colors, then none
         "COFF\n4 2 0\n" + quad + "3 0 1 2 255 0 0\n3 0 2 3\n",                         // face colors, then none
         "COFF\n4 1 0\n0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n",                          // the color count wraps around
+        "COFF\n5 1 0\n" + quad,                                                       // at the end of the file too
         "CNOFF\n4 1 0\n0 0 0 0 0 1\n1 0 0 0 0\n1 1 0 0 0 1\n0 1 0 0 0 1\n4 0 1 2 3\n", // the same with normals
         "C4OFF\n4 1 0\n0 0 0\n1 0 0 1\n1 1 0 1\n0 1 0 1\n4 0 1 2 3\n",                 // and with w
         "COFF\n4 1 0\n" + quad + "4 0 1 2 3 255 0\n",                                  // two components
