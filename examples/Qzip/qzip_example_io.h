@@ -25,6 +25,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -62,7 +63,10 @@ inline bool same_file(const std::string& a, const std::string& b)
 /// abort under AddressSanitizer) on absurd counts. A binary OFF header (see `read_off_binary_header()`)
 /// must declare non-negative counts that fit in the file too (CGAL turns a negative count into a huge one,
 /// and computes an `int` from their sum: undefined behaviour when it overflows), and each face of its data
-/// no more vertices than the rest of the file can hold (see `off_binary_faces_fit()`). Other formats are not checked.
+/// no more vertices than the rest of the file can hold (see `off_binary_faces_fit()`). The lines of an ASCII OFF
+/// file are read as CGAL's scanner reads them (see `off_ascii_data_fits()`): each face must list the indices it
+/// declares (the reader resizes the face to its count first), and with the `C` prefix every color must be one
+/// the scanner reads within the line. Other formats are not checked.
 inline bool check_file_header(const std::string& path, std::uintmax_t file_size, std::string& error)
 {
   std::ifstream in(path, std::ios::binary);
@@ -76,9 +80,10 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
   {
     return declared > double(file_size) && !refuse("its header declares more elements than the file can hold");
   };
-  if(!std::getline(in, line)) return true;
+  // CGAL's PLY reader wants `ply` on the first line; its OFF reader skips blank lines before the keyword
+  std::getline(in, line);
   std::istringstream first(line);
-  if(!(first >> token)) return true;
+  first >> token;
   std::string why;
   if(token == "ply")
   {
@@ -101,20 +106,15 @@ inline bool check_file_header(const std::string& path, std::uintmax_t file_size,
   // CGAL 5.5's ASCII scanner reads texture coordinates at an index it leaves uninitialized without the C prefix,
   // and unchecked with it (a segmentation fault on a short line)
   if(kw.textures) return refuse("texture coordinates in an ASCII OFF file (" + keyword + ") are not supported");
-  // the counts, read as CGAL reads them: a dimension first for `n`, then the vertices, the faces, and the edges for OFF
   in.clear();
   in.seekg(after_keyword);
-  double count[4] = { 0, 0, 0, 0 };
-  int k = kw.dimension ? 0 : 1;
-  for(; k < (kw.off ? 4 : 3); ++k)
-  {
-    skip_off_blanks_and_comments(in);
-    if(!(in >> count[k])) break;
-  }
-  if(k < 3) return true; // CGAL's reader fails on it
-  if(too_many((count[1] > 0 ? count[1] : 0) + (count[2] > 0 ? count[2] : 0))) return false;
-  const bool edges_read = k == 4;
-  return !edges_read || off_edge_count_fits(count[3]) || refuse("malformed OFF header (an edge count out of range)");
+  Off_ascii_header ascii;
+  read_off_ascii_header(in, kw, ascii);
+  if(too_many(double(std::max(ascii.vertices, 0LL)) + double(std::max(ascii.faces, 0LL)))) return false;
+  if(!ascii.complete) return true; // CGAL's reader fails on it
+  if(ascii.vertices < 0 || ascii.faces < 0) return refuse("malformed OFF header (a negative element count)");
+  if(kw.off && !off_edge_count_fits(double(ascii.edges))) return refuse("malformed OFF header (an edge count out of range)");
+  return off_ascii_data_fits(in, kw, ascii, why) || refuse(why);
 }
 
 /// Checks that every face index of the file refers to an existing vertex. CGAL 5.5's OBJ and PLY readers

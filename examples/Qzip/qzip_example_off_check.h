@@ -5,19 +5,27 @@
 //
 // Author(s)     : CGAL Qzip contributors
 //
-// The examples' reading of an OFF header and of binary OFF data as CGAL 5.5's reader reads them (not part of
-// the library): the keyword and its prefixes, the binary counts, and a walk through binary faces, whose counts
-// the reader trusts (it resizes each face before reading it). Used by `check_file_header()`.
+// The examples' reading of an OFF file as CGAL 5.5's reader reads it (not part of the library): the keyword and
+// its prefixes, the binary and ASCII counts, a walk through binary faces, whose counts the reader trusts (it
+// resizes each face before reading it), and a walk through ASCII lines, whose color entries the reader indexes
+// without checking them. Used by `check_file_header()`. Both `CGAL::IO::read_polygon_soup()` and
+// `CGAL::IO::read_polygon_mesh()` (`Surface_mesh` and `Polyhedron_3`, through `Generic_facegraph_builder`) read
+// an OFF file with `CGAL::IO::internal::read_OFF()` (CGAL/IO/OFF.h) and its `File_scanner_OFF`.
 
 #ifndef CGAL_QZIP_EXAMPLE_OFF_CHECK_H
 #define CGAL_QZIP_EXAMPLE_OFF_CHECK_H
 
+#include <CGAL/IO/io.h>
+
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <istream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace qzip_example {
 
@@ -25,7 +33,8 @@ namespace qzip_example {
 /// reads them; `valid` is false for any other keyword.
 struct Off_keyword
 {
-  bool valid = false, off = false, textures = false, normals = false, homogeneous = false, dimension = false;
+  bool valid = false, off = false, textures = false, colors = false, normals = false, homogeneous = false,
+       dimension = false;
 };
 
 inline Off_keyword parse_off_keyword(const std::string& keyword)
@@ -40,7 +49,7 @@ inline Off_keyword parse_off_keyword(const std::string& keyword)
     return true;
   };
   k.textures = prefix("ST");
-  prefix("C"); // colors: not read in binary OFF, and not checked in ASCII OFF
+  k.colors = prefix("C"); // not read in binary OFF
   k.normals = prefix("N");
   k.homogeneous = prefix("4");
   k.dimension = prefix("n");
@@ -172,6 +181,155 @@ inline bool off_binary_faces_fit(std::istream& in, const Off_binary_header& head
       return false;
     }
     at += std::uintmax_t(n) * 4;
+  }
+  return true;
+}
+
+/// What `read_off_ascii_header()` reads of an ASCII OFF header.
+struct Off_ascii_header
+{
+  long long vertices = 0, faces = 0, edges = 0;
+  bool complete = false; // all its counts were read as CGAL reads them: the data follows
+};
+
+/// Reads the counts of an ASCII OFF header as CGAL 5.5's `File_header_OFF` does, `in` just after its keyword (see
+/// `read_off_keyword()`) and `keyword` its prefixes: blanks and comments, then a digit (anything else and the
+/// reader fails, or reads a binary header: see `read_off_binary_header()`), then integers read with `operator>>`
+/// with only blanks between them: a dimension for `n`, the vertices, the faces, and the edges for `OFF` (none for
+/// `SKEL`). Leaves `in` after the last count, where the reader starts reading vertex lines (the rest of the count
+/// line is the first one if it holds anything). `complete` stays false where the reader fails: a missing count, one
+/// that is not an integer, or one that does not fit in a `long long` (the reader reads `int`s: beyond, it fails
+/// too; counts between the two are left to the caller's checks of the counts); the counts read until then are kept.
+inline void read_off_ascii_header(std::istream& in, const Off_keyword& keyword, Off_ascii_header& header)
+{
+  skip_off_blanks_and_comments(in);
+  if(!std::isdigit(in.peek())) return;
+  long long dimension = 0;
+  long long* count[4] = { &dimension, &header.vertices, &header.faces, &header.edges };
+  for(int k = keyword.dimension ? 0 : 1; k < (keyword.off ? 4 : 3); ++k)
+    if(!(in >> *count[k])) return;
+  header.complete = true;
+}
+
+/// The numbers of an ASCII OFF vertex or face line as CGAL 5.5's `File_scanner_OFF` reads them: blanks and comment
+/// lines skipped, the line up to its first `#`, and as many numbers as `CGAL::IO::iformat()` reads from it (the
+/// reader's own number parsing, `operator>>` on a `double` with GCC and clang: the numbers end at the first word
+/// that is not one, or at a value out of range such as `1e999`).
+inline std::vector<double> read_off_ascii_line(std::istream& in)
+{
+  skip_off_blanks_and_comments(in);
+  std::string line;
+  std::getline(in, line);
+  std::istringstream numbers(line.substr(0, line.find('#')));
+  std::vector<double> entries;
+  double d = 0;
+  while(numbers >> CGAL::IO::iformat(d))
+    entries.push_back(d);
+  return entries;
+}
+
+/// Whether CGAL 5.5's `File_scanner_OFF::scan_color()` reads the color of a line safely, the line's numbers in
+/// `entries`, its color starting at `first` with `count` numbers (negative when the line is shorter than what comes
+/// before its color). One number is an index in a table of 149 colors, converted to an `int` and only bounded from
+/// above: it must lie in [0, 2^31). Otherwise the scanner reads three numbers whatever `count` is (past the end of
+/// the line's numbers for 0, 2 or fewer), converts integer components to `unsigned char`, and others times 255:
+/// each must lie in (-1, 256), the range of the conversion.
+inline bool off_ascii_color_readable(const std::vector<double>& entries, std::size_t first, long long count,
+                                     std::string& problem)
+{
+  if(count == 1)
+  {
+    const double index = entries[first];
+    if(index > -1 && index < 2147483648.) return true;
+    problem = "a colormap index out of range";
+    return false;
+  }
+  if(count < 3)
+  {
+    problem = count < 0 ? "fewer numbers than the prefixes of the OFF keyword require"
+                        : count == 0 ? "no color, unlike an earlier one" : "a color of 2 components";
+    return false;
+  }
+  const double* rgb = &entries[first];
+  const bool integers = std::floor(rgb[0]) == rgb[0] && std::floor(rgb[1]) == rgb[1] && std::floor(rgb[2]) == rgb[2];
+  for(int c = 0; c < 3; ++c)
+  {
+    const double v = integers ? rgb[c] : rgb[c] * 255;
+    if(!(v > -1 && v < 256))
+    {
+      problem = "a color component out of range";
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Walks the lines of an ASCII OFF file (`in` just after its header, see `read_off_ascii_header()`) as CGAL 5.5's
+/// `CGAL::IO::internal::read_OFF()` reads them with its `File_scanner_OFF` (lines split by `read_off_ascii_line()`),
+/// stopping where the reader fails on its own (a vertex line with too few numbers, the end of the file...), and
+/// refuses (`false`, the reason in `why`) what the reader would misread:
+/// * a face whose count is negative (the reader converts it to `std::size_t`: undefined behaviour) or larger
+///   than the number of indices its line lists: the reader resizes the face to its count before reading the
+///   indices, and fails only then (16 GB for a count of 2e9);
+/// * a face index that is negative (converted to `std::size_t`) or not that of a vertex (the reader fails on it);
+/// * a vertex `w = 0` with the `4` prefix (an assertion in the reader, a division by zero without assertions);
+/// * with the `C` prefix, a line whose color the scanner does not read safely (see `off_ascii_color_readable()`):
+///   it takes the numbers after the coordinates (and normals, with `N`) as the color, counts them in a `std::size_t`
+///   (a vertex line shorter than the prefixes require wraps around, and so does the end of the file within the
+///   vertices, even without any color), and once a vertex (a face) has a color, it reads a color on every later
+///   vertex (face), from past the end of the line's numbers if there is none.
+inline bool off_ascii_data_fits(std::istream& in, const Off_keyword& keyword, const Off_ascii_header& header,
+                                std::string& why)
+{
+  if(!header.complete) return true;
+  const std::size_t h = keyword.homogeneous ? 1 : 0;
+  const std::size_t coordinates = 3 + h, before_color = coordinates + (keyword.normals ? 3 + h : 0);
+  std::string problem;
+  bool colors = false; // the scanner's `has_vcolors()`, then `has_fcolors()`: once set, never reset
+  auto refuse = [&](const std::string& element, long long i, const std::string& what)
+  {
+    why = element + " " + std::to_string(i) + " of the OFF data " + what;
+    return false;
+  };
+  for(long long v = 0; v < header.vertices; ++v)
+  {
+    const std::vector<double> entries = read_off_ascii_line(in);
+    if(h == 1 && entries.size() >= 4 && entries[3] == 0) return refuse("vertex", v, "has a homogeneous coordinate w = 0");
+    if(keyword.colors)
+    {
+      const long long count = (long long)entries.size() - (long long)before_color;
+      colors = colors || count != 0;
+      if(colors && !off_ascii_color_readable(entries, before_color, count, problem)) return refuse("vertex", v, "has " + problem);
+    }
+    if(entries.size() < before_color || !in.good()) return true; // the reader fails on this vertex
+  }
+  colors = false;
+  for(long long f = 0; f < header.faces; ++f)
+  {
+    const std::vector<double> entries = read_off_ascii_line(in);
+    if(entries.empty()) return true; // the reader fails
+    if(!(entries[0] > -1)) return refuse("face", f, "has a negative number of vertices");
+    if(entries[0] >= double(entries.size()))
+    {
+      std::ostringstream declared;
+      declared.precision(15);
+      declared << entries[0];
+      return refuse("face", f, "declares " + declared.str() + " vertices but lists " + std::to_string(entries.size() - 1));
+    }
+    const std::size_t n = std::size_t(entries[0]);
+    for(std::size_t j = 1; j <= n; ++j)
+      if(!(entries[j] > -1 && entries[j] < double(header.vertices)))
+      {
+        why = "a face refers to a vertex that does not exist (the file has " + std::to_string(header.vertices)
+              + " vertices)";
+        return false;
+      }
+    if(keyword.colors)
+    {
+      const long long count = (long long)(entries.size() - n - 1);
+      colors = colors || count != 0;
+      if(colors && !off_ascii_color_readable(entries, n + 1, count, problem)) return refuse("face", f, "has " + problem);
+    }
   }
   return true;
 }

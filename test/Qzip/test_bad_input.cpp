@@ -20,6 +20,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <map>
 #include <new>
 #include <set>
@@ -27,6 +30,7 @@
 #include <stdexcept>
 
 #include <dirent.h>
+#include <unistd.h>
 
 using namespace qzip_test;
 namespace Q = CGAL::Qzip;
@@ -335,9 +339,96 @@ void test_ply_header_as_cgal_reads_it()
   assert(!data_fits(triangle, "0 0 0\n1 0 0\n0 1 0\n3 0 1\n"));        // ends early
 }
 
+/// ASCII OFF lines are read as CGAL 5.5's scanner reads them (examples/Qzip/qzip_example_off_check.h): refused where
+/// the scanner would read a color past the end of a line's numbers, resize a face to a count its line does not hold,
+/// convert a value out of the range of its type or divide by a zero `w`; accepted (or left to CGAL's reader where it
+/// fails on its own) otherwise.
+void test_off_ascii_lines_as_cgal_reads_them()
+{
+  std::string why;
+  auto fits = [&why](const std::string& file)
+  {
+    std::istringstream in(file);
+    const qzip_example::Off_keyword keyword = qzip_example::parse_off_keyword(qzip_example::read_off_keyword(in));
+    assert(keyword.valid);
+    qzip_example::Off_ascii_header header;
+    qzip_example::read_off_ascii_header(in, keyword, header);
+    why.clear();
+    const bool ok = qzip_example::off_ascii_data_fits(in, keyword, header, why);
+    assert(ok == why.empty() && why.find('\n') == std::string::npos);
+    return ok;
+  };
+  const std::string quad = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+  const std::string colored_quad = "0 0 0 255 0 0\n1 0 0 0 255 0\n1 1 0 0 0 255\n0 1 0 1 1 1\n";
+  // what CGAL's reader reads correctly
+  for(const std::string& file : std::vector<std::string>{
+        "OFF\n4 1 0\n" + quad + "4 0 1 2 3\n",
+        "# comment\nOFF\n# comment\n4 1 0\n\n" + quad + "# comment\n\n4 0 1 2 3 # comment\n",
+        "OFF\r\n4 1 0\r\n0 0 0\r\n1 0 0\r\n1 1 0\r\n0 1 0\r\n4 0 1 2 3\r\n",          // CRLF
+        "OFF 4 1 0 0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3",                            // first vertex on the count line, no final newline
+        "OFF\n4 1 0\n" + quad + "4 0 1 2 3 255 0 0 255\n",                            // face color without C: ignored
+        "OFF\n4 1 0\n" + quad + "3.9 0 1 2 3\n",                                      // count read as 3
+        "COFF\n4 1 0\n" + quad + "4 0 1 2 3 1e999 0 0\n",                              // the numbers end at 1e999: no color
+        "nOFF 3\n4 1 0\n" + quad + "4 0 1 2 3\n",                                     // dimension first
+        "4OFF\n4 1 0\n0 0 0 1\n2 0 0 2\n1 1 0 1\n0 1 0 -1\n4 0 1 2 3\n",
+        "COFF\n4 1 0\n" + colored_quad + "4 0 1 2 3\n",                               // colors on vertices only
+        "COFF\n4 2 0\n" + quad + "3 0 1 2 255 0 0\n3 0 2 3 0.5 0.5 0.5 1\n",          // on faces only (RGB, RGBA)
+        "COFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0 3\n0 1 0 0.2 0.4 0.6 1\n4 0 1 2 3\n",       // none, then colors: none read first
+        "COFF\n4 1 0\n0 0 0 0\n1 0 0 148\n1 1 0 500\n0 1 0 -0.5\n4 0 1 2 3 12\n",     // colormap indices (clamped above 148)
+        "CNOFF\n4 1 0\n0 0 0 0 0 1 255 0 0\n1 0 0 0 0 1 7\n1 1 0 0 0 1 0 0 1 1\n0 1 0 0 0 1 9\n4 0 1 2 3\n",
+        "C4OFF\n4 1 0\n0 0 0 1 255 0 0\n1 0 0 1 7\n1 1 0 2 0 0 255\n0 1 0 1 3\n4 0 1 2 3\n" })
+    assert(fits(file));
+  // where CGAL's reader fails on its own, before any color: left to it
+  assert(fits("OFF\n4 1 0\n0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"));        // a short vertex line
+  assert(fits("COFF\n4 2 0\n" + quad + "4 0 1 2 3\n"));                        // a missing face
+  assert(fits("OFF\n4 1\n" + quad + "4 0 1 2 3\n"));                           // no edge count: read from the vertices
+  // what it misreads
+  for(const std::string& file : std::vector<std::string>{
+        "OFF\n4 1 0\n" + quad + "1000000000 0 1 2 3\n",         // a face resized to 10^9 before its indices are read
+        "OFF\n4 1 0\n" + quad + "5 0 1 2 3\n",                  // one index missing
+        "OFF\n4 1 0\n" + quad + "1e300 0 1 2 3\n",
+        "OFF\n4 1 0\n" + quad + "-1 0 1 2 3\n",                 // converted to std::size_t
+        "OFF\n4 1 0\n" + quad + "4 0 1 2 -1\n",                 // an index converted to std::size_t
+        "OFF\n4 1 0\n" + quad + "4 0 1 2 4\n",                  // no vertex 4
+        "COFF\n4 1 0\n0 0 0 255 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n",                 // vertex colors, then none
+        "COFF\n4 2 0\n" + quad + "3 0 1 2 255 0 0\n3 0 2 3\n",                         // face colors, then none
+        "COFF\n4 1 0\n0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n",                          // the color count wraps around
+        "COFF\n5 1 0\n" + quad,                                                       // at the end of the file too
+        "CNOFF\n4 1 0\n0 0 0 0 0 1\n1 0 0 0 0\n1 1 0 0 0 1\n0 1 0 0 0 1\n4 0 1 2 3\n", // the same with normals
+        "C4OFF\n4 1 0\n0 0 0\n1 0 0 1\n1 1 0 1\n0 1 0 1\n4 0 1 2 3\n",                 // and with w
+        "COFF\n4 1 0\n" + quad + "4 0 1 2 3 255 0\n",                                  // two components
+        "COFF\n4 1 0\n0 0 0 -1\n1 0 0 1\n1 1 0 1\n0 1 0 1\n4 0 1 2 3\n",               // a negative colormap index
+        "COFF\n4 1 0\n" + quad + "4 0 1 2 3 1e10\n",                                   // an index beyond int
+        "COFF\n4 1 0\n" + quad + "4 0 1 2 3 256 0 0\n",                                // beyond unsigned char
+        "COFF\n4 1 0\n" + quad + "4 0 1 2 3 1.5 0.5 0\n",                              // 1.5 * 255
+        "COFF\n4 1 0\n" + quad + "4 0 1 2 3 255 255 -1\n",                            // negative
+        "4OFF\n4 1 0\n0 0 0 1\n1 0 0 0\n1 1 0 1\n0 1 0 1\n4 0 1 2 3\n" })              // w = 0
+    assert(!fits(file));
+  // the header counts, through check_file_header() on a file
+  auto check = [&why](const std::string& content)
+  {
+    const char* tmp = std::getenv("TMPDIR");
+    const std::string path = std::string(tmp ? tmp : "/tmp") + "/test_bad_input_off_ascii_" + std::to_string(::getpid()) + ".off";
+    {
+      std::ofstream out(path, std::ios::binary);
+      out << content;
+    }
+    why.clear();
+    const bool ok = qzip_example::check_file_header(path, std::uintmax_t(content.size()), why);
+    std::remove(path.c_str());
+    return ok;
+  };
+  assert(check("COFF\n4 1 0\n" + colored_quad + "4 0 1 2 3\n"));
+  assert(!check("nOFF 3 -4 1 0\n" + quad + "4 0 1 2 3\n") && why.find("negative") != std::string::npos);
+  assert(!check("OFF\n8 6") && why.find("more elements") != std::string::npos);
+  assert(!check("OFF\n4 1 0\n" + quad + "2000000000 0 1 2 3\n") && why.find("declares 2000000000 vertices") != std::string::npos);
+  assert(!check("COFF\n4 1 0\n0 0 0 9\n" + quad.substr(6) + "4 0 1 2 3\n") && why.find("vertex 1") != std::string::npos);
+}
+
 int main(int argc, char** argv)
 {
   test_ply_header_as_cgal_reads_it();
+  test_off_ascii_lines_as_cgal_reads_them();
   const std::string dir = (argc > 1) ? argv[1] : "data/bad";
   const std::map<std::string, std::string> expected = read_manifest(dir);
   const std::vector<std::string> names = list_directory(dir);
