@@ -102,12 +102,13 @@ class Reference_surface
           f(bucket(i, j, k));
   }
 
-  // the tree's answer, searched from `start`, the closest point to p of the hint triangle, if there is a hint
-  // (a point of the surface, as the tree requires of a hint); the hint becomes the triangle of the answer
-  Point fallback(const Point& p, const Point& start, std::size_t& hint) const
+  // the tree's answer, searched from the closest point to p of the hint triangle if there is a hint (a point
+  // of the surface, as the tree requires of a hint); the hint becomes the triangle of the answer
+  Point fallback(const Point& p, std::size_t& hint) const
   {
+    const Triangle_iterator t = triangles.begin() + std::ptrdiff_t(hint == 0 ? 0 : hint - 1);
     const auto r = hint == 0 ? tree->closest_point_and_primitive(p)
-                             : tree->closest_point_and_primitive(p, std::make_pair(start, triangles.begin() + std::ptrdiff_t(hint - 1)));
+                             : tree->closest_point_and_primitive(p, std::make_pair(GeomTraits().construct_projected_point_3_object()(*t, p), t));
     hint = std::size_t(r.second - triangles.begin()) + 1;
     return r.first;
   }
@@ -170,10 +171,9 @@ public:
   Point closest_point(const Point& p, std::size_t& hint) const
   {
     if(hint > triangles.size()) hint = 0;
-    if(hint == 0) return fallback(p, p, hint);
+    if(hint == 0) return fallback(p, hint);
     std::size_t best_triangle = hint - 1;
     Point best = GeomTraits().construct_projected_point_3_object()(triangles[best_triangle], p);
-    const Point start = best;
     // every triangle at most as far as `best` has its bounding box within r of p (r slightly enlarged
     // against rounding)
     const double r2 = CGAL::to_double(CGAL::squared_distance(p, best)) * (1 + 1e-9);
@@ -187,7 +187,7 @@ public:
       hi[a] = cell_index(c[a] + r, a);
       n *= hi[a] - lo[a] + 1;
     }
-    if(n > max_cells_per_query) return fallback(p, start, hint);
+    if(n > max_cells_per_query) return fallback(p, hint);
     if(++query_round == 0) { std::fill(reached_in.begin(), reached_in.end(), 0u); query_round = 1; }
     reached_in[hint - 1] = query_round;
     bool tie = false; // another point as close as `best`
@@ -216,7 +216,7 @@ public:
             else if(cmp == CGAL::EQUAL && q != best) tie = true;
           }
         }
-    if(tie) return fallback(p, start, hint);
+    if(tie) return fallback(p, hint);
     hint = best_triangle + 1;
     return best;
   }
