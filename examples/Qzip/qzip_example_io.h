@@ -139,8 +139,7 @@ inline bool face_indices_in_range(const std::string& path, std::string& error)
     for(std::size_t i : polygon)
       if(i >= points.size())
       {
-        error = "cannot read '" + path + "': a face refers to a vertex that does not exist (the file has "
-                + std::to_string(points.size()) + " vertices)";
+        error = "cannot read '" + path + "': " + missing_vertex_reason(points.size());
         return false;
       }
   return true;

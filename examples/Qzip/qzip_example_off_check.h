@@ -185,6 +185,12 @@ inline bool off_binary_faces_fit(std::istream& in, const Off_binary_header& head
   return true;
 }
 
+/// The reason given for a face index that is not that of one of the `vertices` vertices of the file.
+inline std::string missing_vertex_reason(std::uintmax_t vertices)
+{
+  return "a face refers to a vertex that does not exist (the file has " + std::to_string(vertices) + " vertices)";
+}
+
 /// What `read_off_ascii_header()` reads of an ASCII OFF header.
 struct Off_ascii_header
 {
@@ -320,8 +326,7 @@ inline bool off_ascii_data_fits(std::istream& in, const Off_keyword& keyword, co
     for(std::size_t j = 1; j <= n; ++j)
       if(!(entries[j] > -1 && entries[j] < double(header.vertices)))
       {
-        why = "a face refers to a vertex that does not exist (the file has " + std::to_string(header.vertices)
-              + " vertices)";
+        why = missing_vertex_reason(std::uintmax_t(header.vertices));
         return false;
       }
     if(keyword.colors)
