@@ -724,17 +724,18 @@ void make_genus3_plate(Surface_mesh& m)
 }
 
 // the genus-3 plate where the batches and the plain end game stop above the optimum (a v3-v5 pair or more
-// left), for the first such seed (of 20), which it returns
+// left), for the first such seed from 26 on (of 20), which it returns. Since the vertices a Q-zip creates are
+// put onto the surface before the smoothing, the batches reach the optimum on seeds 0 to 25.
 unsigned int make_plate_where_batches_stop(Surface_mesh& m)
 {
-  unsigned int seed = 0;
-  for(; seed < 20; ++seed)
+  unsigned int seed = 26;
+  for(; seed < 46; ++seed)
   {
     make_genus3_plate(m);
     Q::optimize_singularities(m, Q::parameters::do_look_ahead(false, CGAL::parameters::random_seed(seed)));
     if(singularities(m) > 16) break;
   }
-  assert(seed < 20);
+  assert(seed < 46);
   return seed;
 }
 
@@ -1080,6 +1081,62 @@ void test_reference_surface()
   }
 }
 
+// The surface of a mesh, to measure how far the vertices of another mesh lie from it: each quad counts as
+// the union of its two triangulations (the optimizer may triangulate it either way), other faces as fans.
+class Input_surface
+{
+  typedef K::Triangle_3 Triangle;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, std::vector<Triangle>::const_iterator> > > Tree;
+  std::vector<Triangle> triangles;
+  Tree tree;
+  double mean_edge = 0;
+
+public:
+  template <typename Mesh>
+  explicit Input_surface(const Mesh& m)
+  {
+    for(auto e : edges(m))
+      mean_edge += std::sqrt(CGAL::squared_distance(get(CGAL::vertex_point, m, source(e, m)), get(CGAL::vertex_point, m, target(e, m))));
+    mean_edge /= double(num_edges(m));
+    for(auto f : faces(m))
+    {
+      std::vector<Point> p;
+      for(auto v : vertices_around_face(halfedge(f, m), m)) p.push_back(get(CGAL::vertex_point, m, v));
+      for(std::size_t i = 1; i + 1 < p.size(); ++i) triangles.emplace_back(p[0], p[i], p[i + 1]);
+      if(p.size() == 4) { triangles.emplace_back(p[1], p[2], p[3]); triangles.emplace_back(p[1], p[3], p[0]); }
+    }
+    tree.insert(triangles.begin(), triangles.end());
+    tree.accelerate_distance_queries();
+  }
+
+  // the largest distance from a vertex of `m` to the surface, in mean edge lengths of the input
+  template <typename Mesh>
+  double largest_distance(const Mesh& m) const
+  {
+    double d = 0;
+    for(auto v : vertices(m)) d = (std::max)(d, tree.squared_distance(get(CGAL::vertex_point, m, v)));
+    return std::sqrt(d) / mean_edge;
+  }
+};
+
+// Every vertex of an optimized quad mesh lies on the input surface: the vertices a Q-zip creates or merges
+// at midpoints are put onto it before the smoothing, which projects every move. (Before, a vertex whose
+// smoothing moves were all refused stayed where the Q-zip had put it: on the bundled gargoyle, with the
+// defaults, up to 0.86 mean edge lengths off the surface.)
+void test_vertices_on_input_surface(const std::string& data_dir)
+{
+  Surface_mesh m;
+  if(!read_mesh(data_dir + "quadriflow_gargoyle.obj", m)) { std::cerr << "cannot read the gargoyle" << std::endl; assert(false); }
+  Q::preprocess_valences(m);
+  const Input_surface input(m);
+  const auto s = Q::optimize_singularities(m);
+  const double d = input.largest_distance(m);
+  std::cout << "gargoyle: " << s.initial_number_of_singularities << " -> " << s.number_of_singularities
+            << " singularities, vertices at most " << d << " mean edge lengths from the input surface" << std::endl;
+  assert(s.number_of_singularities < s.initial_number_of_singularities && s.number_of_undone_surgeries > 0);
+  assert(d < 1e-9);
+}
+
 // the shared corpus, when present: invariants on a few small meshes, both mesh types on one of them
 void test_corpus()
 {
@@ -1092,7 +1149,9 @@ void test_corpus()
     Q::preprocess_valences(m);
     const long chi = euler_characteristic(m);
     const bool valid_input = Q::compute_mesh_report(m).number_of_inverted_quads == 0;
+    const Input_surface input(m);
     const auto s = Q::optimize_singularities(m, CGAL::parameters::random_seed(1));
+    assert(input.largest_distance(m) < 1e-9);
     std::cout << name << ": " << s.initial_number_of_singularities << " -> " << s.number_of_singularities
               << " singularities, " << s.initial_number_of_faces << " -> " << s.number_of_faces << " quads, "
               << s.elapsed_seconds << " s" << std::endl;
@@ -1119,6 +1178,7 @@ void test_corpus()
   Q::preprocess_valences(m, CGAL::parameters::edge_is_constrained_map(feature));
   Features features;
   features.record(m, feature);
+  const Input_surface input(m);
   const long chi = euler_characteristic(m);
   const auto s = Q::optimize_singularities(m, CGAL::parameters::edge_is_constrained_map(feature).random_seed(4));
   std::cout << "rocker arm with features: " << s.initial_number_of_singularities << " -> " << s.number_of_singularities
@@ -1126,6 +1186,8 @@ void test_corpus()
   assert(CGAL::is_valid_polygon_mesh(m) && all_faces_have_degree(m, 4) && euler_characteristic(m) == chi);
   assert(s.number_of_singularities < s.initial_number_of_singularities);
   features.check(m, feature);
+  std::cout << "rocker arm with features: vertices at most " << input.largest_distance(m) << " mean edge lengths from the input surface" << std::endl;
+  assert(input.largest_distance(m) < 1e-9);
 }
 
 // the answers of the scoring context at a vertex asked several times in a batch, with other counts,
@@ -1313,6 +1375,7 @@ int main(int argc, char** argv)
   test_look_ahead_quality_guard();
   test_untangle();
   test_reference_surface();
+  test_vertices_on_input_surface("data/");
   test_feature_sliding(fandisk);
   test_protection_and_features(fandisk);
   test_travel();

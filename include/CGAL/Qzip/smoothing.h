@@ -264,6 +264,17 @@ public:
     return q;
   }
 
+  // puts the free vertices of `vs` that do not slide along a feature curve at their closest point on the
+  // reference surface, whatever that does to their quads (the smoothing and the caller's quality guard
+  // judge the result): a Q-zip places the vertices it creates or merges at midpoints, off a curved surface,
+  // where a vertex whose smoothing moves are all refused would otherwise stay
+  void snap_to_surface(const std::vector<vertex_descriptor>& vs)
+  {
+    if(surface.empty()) return;
+    for(vertex_descriptor v : vs)
+      if(!is_fixed(v) && sliding_feature(v) == nullptr) put(vpm, v, project(v, get(vpm, v)));
+  }
+
   // the free vertices of `region` with their springs (the stiffness of each incident edge, by the
   // valences at its ends) and their incident quads: smoothing moves vertices but changes no valence and
   // no face

@@ -724,7 +724,11 @@ private:
     std::vector<Point> saved;
     saved.reserve(scar.size());
     for(vertex_descriptor v : scar) saved.push_back(get(vpm, v));
-    if(settings.smooth) smoother.smooth(scar, settings.smoothing_iterations);
+    if(settings.smooth)
+    {
+      smoother.snap_to_surface(r.touched_vertices);
+      smoother.smooth(scar, settings.smoothing_iterations);
+    }
     // never worse: no more inverted quads than before, and no quad worse than the worst one before
     // unless it stays above the quality floor; and the number of faces the execution left within the
     // tolerance (or closer to the initial one)

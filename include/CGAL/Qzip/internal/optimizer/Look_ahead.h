@@ -500,7 +500,11 @@ private:
     for(vertex_descriptor v : scar) if(is_unchanged(v)) unchanged_in_scar.push_back(v);
     for_each_intact_quad(unchanged_in_scar, [&](halfedge_descriptor h) { count_before(quad_key(h), quality(h)); });
     auto passes = [&]() { return changed_quads_pass(scar, before); };
-    if(settings.smooth) smoother.smooth(scar, 3 * settings.smoothing_iterations);
+    if(settings.smooth)
+    {
+      smoother.snap_to_surface(changed);
+      smoother.smooth(scar, 3 * settings.smoothing_iterations);
+    }
     if(passes() || (settings.smooth && smoother.untangle(scar, untangling_sweeps, settings.quality_floor) > 0 && passes()))
     {
       chain.scar = std::move(scar);
