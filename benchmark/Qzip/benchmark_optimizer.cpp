@@ -28,14 +28,12 @@
 // a run goes on for a while after it, until its stop predicate gives up.
 
 #include "qzip_test_utils.h"
+#include "qzip_input_surface.h"
 
 #include <CGAL/Qzip/mesh_report.h>
 #include <CGAL/Qzip/optimize_singularities.h>
 #include <CGAL/Qzip/preprocess.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Real_timer.h>
@@ -160,23 +158,15 @@ static std::size_t singular(const Q::Mesh_report& r)
          r.number_of_boundary_negative_defects + r.number_of_boundary_positive_defects;
 }
 
-// how far the vertices of `result` lie from the surface of `input`, in mean edge lengths of `input`: the
-// largest distance, the mean one, and the number of vertices farther than a tenth of an edge
+// how far the vertices of `result` lie from the surface of `input` (see qzip_test::Input_surface), in mean edge
+// lengths of `input`: the largest distance, the mean one, and the number of vertices farther than a tenth of an edge
 static std::array<double, 3> off_surface(const Mesh& input, const Mesh& result)
 {
-  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
-  double length = 0;
-  for(auto e : edges(input))
-    length += std::sqrt(CGAL::squared_distance(input.point(source(e, input)), input.point(target(e, input))));
-  length /= double(num_edges(input));
-  Mesh triangulated(input);
-  PMP::triangulate_faces(triangulated);
-  Tree tree(faces(triangulated).first, faces(triangulated).second, triangulated);
+  const qzip_test::Input_surface<K> surface(input);
   std::array<double, 3> out = {{ 0, 0, 0 }};
   for(auto v : vertices(result))
   {
-    const double d = std::sqrt(tree.squared_distance(result.point(v))) / length;
+    const double d = surface.distance(result.point(v));
     out[0] = (std::max)(out[0], d);
     out[1] += d;
     if(d > 0.1) ++out[2];

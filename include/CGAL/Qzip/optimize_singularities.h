@@ -24,6 +24,9 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
+#include <vector>
+
 namespace CGAL {
 namespace Qzip {
 
@@ -221,18 +224,31 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
   settings.input_number_of_faces = faces(pm).size();
 
   typedef internal::Triangle_pairing<PolygonMesh, VPM, ECM, FCM, Geom_traits> Pairing;
+  typedef internal::Quad_smoother<PolygonMesh, VPM, ECM, FCM, Geom_traits> Smoother;
+  typedef typename boost::property_traits<VPM>::value_type Point;
+  // the reference surface of the projections: `pm` as given, before the pairing of its triangles
+  Smoother smoother(pm, vpm, ecm, fcm, settings.smooth);
   Optimizer_result result;
   result.initial_number_of_triangles = Pairing::number_of_triangles(pm);
   if(result.initial_number_of_triangles > 1)
   {
     const Geom_traits gt = choose_parameter<Geom_traits>(get_parameter(np, CGAL::internal_np::geom_traits));
+    const auto less = gt.less_xyz_3_object();
+    std::vector<Point> input_points;
+    for(typename GT::vertex_descriptor v : vertices(pm)) input_points.push_back(get(vpm, v));
+    std::sort(input_points.begin(), input_points.end(), less);
     const internal::Triangle_pairing_statistics ps = Pairing(pm, vpm, ecm, fcm, gt).run();
     result.number_of_triangle_collisions = ps.collisions;
     result.number_of_undone_triangle_paths = ps.undone;
+    // the vertices the kept collisions placed off the surface (an undone attempt restores every position)
+    std::vector<typename GT::vertex_descriptor> placed;
+    for(typename GT::vertex_descriptor v : vertices(pm))
+      if(!std::binary_search(input_points.begin(), input_points.end(), get(vpm, v), less)) placed.push_back(v);
+    if(settings.smooth) smoother.settle_on_surface(placed);
   }
 
   internal::Batch_optimizer<PolygonMesh, VPM, ECM, FCM, Geom_traits, Scoring, Stop, Visitor_type>
-    optimizer(pm, vpm, ecm, fcm, scoring, stop, visitor, settings);
+    optimizer(pm, vpm, ecm, fcm, smoother, scoring, stop, visitor, settings);
   static_cast<Optimizer_statistics&>(result) = optimizer.run();
   result.number_of_triangles = Pairing::number_of_triangles(pm);
   return result;

@@ -275,6 +275,31 @@ public:
       if(!is_fixed(v) && sliding_feature(v) == nullptr) put(vpm, v, project(v, get(vpm, v)));
   }
 
+  // moves each free vertex of `vs` that does not slide along a feature curve to its closest point on the
+  // reference surface if its quads accept it as they accept a smoothing move (no new inverted quad, and above
+  // the quality floor or no worse than before); returns the number of vertices moved. For vertices another
+  // operation placed off the surface (the triangle pairing of the optimizer), outside any quality guard.
+  std::size_t settle_on_surface(const std::vector<vertex_descriptor>& vs)
+  {
+    if(surface.empty()) return 0;
+    std::size_t moved = 0;
+    for(vertex_descriptor v : vs)
+    {
+      if(is_fixed(v) || sliding_feature(v) != nullptr) continue;
+      const Point old = get(vpm, v);
+      const Point on = project(v, old);
+      if(on == old) continue;
+      const std::pair<std::size_t, double> before = incident_quality(v);
+      put(vpm, v, on);
+      const std::pair<std::size_t, double> after = incident_quality(v);
+      if(after.first <= before.first && ((after.second > 0 && after.second >= quality_floor) || after.second >= before.second))
+        ++moved;
+      else
+        put(vpm, v, old);
+    }
+    return moved;
+  }
+
   // the free vertices of `region` with their springs (the stiffness of each incident edge, by the
   // valences at its ends) and their incident quads: smoothing moves vertices but changes no valence and
   // no face

@@ -119,7 +119,7 @@ class Batch_optimizer
   Optimizer_settings settings;
 
   Context ctx;
-  Smoother smoother;
+  Smoother& smoother;
   CGAL::Random rng;
   Optimizer_statistics stats;
   CGAL::Real_timer timer;
@@ -151,10 +151,13 @@ class Batch_optimizer
   std::set<Surgery_key> undone_in_batches; // the same in the batches since the count last dropped (see reject())
 
 public:
+  // `smoother` (its reference surface: the mesh as the caller was given it; projecting unless smoothing is
+  // off) smooths and projects the scars; its quality floor becomes that of `settings`
   Batch_optimizer(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
-                  const Scoring& scoring, const StopPredicate& stop, Visitor& visitor, const Optimizer_settings& settings)
+                  Smoother& smoother, const Scoring& scoring, const StopPredicate& stop, Visitor& visitor,
+                  const Optimizer_settings& settings)
     : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm), scoring(scoring), stop(stop), visitor(visitor), settings(settings),
-      ctx(pm, vpm, ecm, fcm), smoother(pm, vpm, ecm, fcm, settings.smooth), rng(settings.seed),
+      ctx(pm, vpm, ecm, fcm), smoother(smoother), rng(settings.seed),
       search_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       op_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
       scar_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
