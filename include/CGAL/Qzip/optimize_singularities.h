@@ -228,6 +228,7 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
   typedef typename boost::property_traits<VPM>::value_type Point;
   // the reference surface of the projections: `pm` as given, before the pairing of its triangles
   Smoother smoother(pm, vpm, ecm, fcm, settings.smooth);
+  smoother.quality_floor = settings.quality_floor;
   Optimizer_result result;
   result.initial_number_of_triangles = Pairing::number_of_triangles(pm);
   if(result.initial_number_of_triangles > 1)
