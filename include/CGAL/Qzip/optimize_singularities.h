@@ -101,7 +101,11 @@ split there, and both copies move a third of the way towards the midpoint of the
 smoothing moves no border vertex, slides the vertices of feature curves along the input feature polylines
 and keeps feature corners and the vertices of protected faces in place. So feature curves keep their
 vertices and edges, feature corners and protected faces keep their positions bit for bit; since surgeries
-and smoothing are both guarded, no inverted quad appears when the input has none. The result depends only
+and smoothing are both guarded, no inverted quad appears when the input has none. When smoothing is on,
+the vertices stay on the input surface (`pm` as given, its faces triangulated): the vertices a surgery
+touched are put at their closest point on it before its scar is smoothed, every smoothing move is projected
+onto it, and the vertices the pairing of triangles placed are put onto it when their quads accept it (a vertex
+whose quads refuse stays off the surface until a smoothing move of it is accepted). The result depends only
 on the input, the parameters and the seed, not on the mesh data structure.
 
 Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valences()` first.
