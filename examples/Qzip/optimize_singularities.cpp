@@ -3,14 +3,16 @@
 // collides them into quads, Sec. 3.2) and the summary says how many are left. Faces with five or more
 // sides are not supported: such an input is refused with one "error:" line.
 //
-// usage: optimize_singularities [IN [OUT]] [--batches N] [--seed S] [--feature-angle DEG]
-//                               [--protect FACES.txt] [--no-smooth] [--json REPORT]
+// usage: optimize_singularities [IN [OUT]] [--batches N] [--time-limit SECONDS] [--seed S]
+//                               [--feature-angle DEG] [--protect FACES.txt] [--no-smooth] [--json REPORT]
 //
 // Reads IN (default: the bundled Spot, CGAL::data_file_path("meshes/spot_quadrangulated.obj")),
 // removes interior valence-2 vertices and splits valence-6+ ones (preprocess_valences()), optimizes,
 // and writes OUT atomically (through a temporary file renamed over OUT). Without OUT nothing is written:
 // only the before/after summary is printed. Progress goes to stderr.
 //   --batches N         at most N batches (default: until the plateau, at most 200)
+//   --time-limit S      start no batch (nor end-game step) once S seconds have passed since the start of the
+//                       optimization (preprocessing excluded); the one under way finishes
 //   --seed S            seed of the random choices (default 0); the result depends only on it
 //   --feature-angle DEG edges whose dihedral angle exceeds DEG degrees are features: never crossed
 //   --protect FILE      0-based indices of faces of IN, one per line: no edit reaches them
@@ -33,6 +35,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -46,8 +49,8 @@ namespace Q = CGAL::Qzip;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 static const char* usage =
-  "usage: optimize_singularities [IN [OUT]] [--batches N] [--seed S] [--feature-angle DEG] "
-  "[--protect FACES.txt] [--no-smooth] [--json REPORT]";
+  "usage: optimize_singularities [IN [OUT]] [--batches N] [--time-limit SECONDS] [--seed S] "
+  "[--feature-angle DEG] [--protect FACES.txt] [--no-smooth] [--json REPORT]";
 
 // prints progress on stderr
 struct Progress_visitor : public Q::Default_optimizer_visitor<Mesh>
@@ -85,7 +88,7 @@ static void summary(std::ostream& os, const char* title, const Q::Mesh_report& r
 int main(int argc, char** argv)
 {
   const std::set<std::string> flags = { "--no-smooth", "--help", "-h" };
-  const std::set<std::string> with_value = { "--batches", "--seed", "--feature-angle", "--protect", "--json" };
+  const std::set<std::string> with_value = { "--batches", "--time-limit", "--seed", "--feature-angle", "--protect", "--json" };
   if(qzip_example::has_flag(argc, argv, "--help") || qzip_example::has_flag(argc, argv, "-h"))
   {
     std::cout << usage << std::endl;
@@ -119,6 +122,14 @@ int main(int argc, char** argv)
   { std::cerr << "error: --batches expects a positive integer, got '" << batches_s << "'" << std::endl; return EXIT_FAILURE; }
   if(!seed_s.empty() && !parse_unsigned(seed_s, seed))
   { std::cerr << "error: --seed expects a non-negative integer, got '" << seed_s << "'" << std::endl; return EXIT_FAILURE; }
+  double time_limit = std::numeric_limits<double>::infinity();
+  const std::string limit_s = qzip_example::option_value(argc, argv, "--time-limit");
+  if(!limit_s.empty())
+  {
+    std::istringstream is(limit_s);
+    if(!(is >> time_limit) || !is.eof() || !(time_limit > 0 && time_limit < 1e9))
+    { std::cerr << "error: --time-limit expects a positive number of seconds, got '" << limit_s << "'" << std::endl; return EXIT_FAILURE; }
+  }
   double feature_angle = -1;
   const std::string angle_s = qzip_example::option_value(argc, argv, "--feature-angle");
   if(!angle_s.empty())
@@ -209,7 +220,8 @@ int main(int argc, char** argv)
   Q::Optimizer_result stats;
   const bool smooth = !qzip_example::has_flag(argc, argv, "--no-smooth");
   const auto common = Q::parameters::face_is_constrained_map(fprot,
-                        CGAL::parameters::edge_is_constrained_map(efeat).random_seed(unsigned(seed)).visitor(std::ref(progress)));
+                        CGAL::parameters::edge_is_constrained_map(efeat).random_seed(unsigned(seed)).visitor(std::ref(progress))
+                          .maximum_running_time(time_limit));
   if(batches > 0)
     stats = Q::optimize_singularities(mesh, Q::parameters::combine(common, Q::parameters::do_smooth(smooth),
               Q::parameters::stop_predicate(Q::stop_when_either(Q::Batch_count_stop_predicate(batches),
@@ -229,6 +241,8 @@ int main(int argc, char** argv)
             << " rolled back by the primitive; time " << std::setprecision(3) << timer.time()
             << " s (preprocessing included; scoring " << stats.scoring_seconds << " s, execution and smoothing "
             << stats.execution_seconds << " s)\n";
+  if(stats.reached_time_limit)
+    std::cout << "stopped at the time limit (" << time_limit << " s): more batches would have run\n";
 
   mesh.remove_property_map(fprot);
   mesh.remove_property_map(efeat);
@@ -259,7 +273,8 @@ int main(int argc, char** argv)
        << stats.number_of_triangles << ", \"triangle_collisions\": " << stats.number_of_triangle_collisions
        << ", \"undone\": " << stats.number_of_undone_surgeries << ", \"failed\": " << stats.number_of_failed_surgeries
        << ", \"seed\": " << seed << ", \"smoothing\": " << (smooth ? "true" : "false")
-       << ", \"seconds\": " << timer.time() << "}\n}\n";
+       << ", \"seconds\": " << timer.time() << ", \"reached_time_limit\": " << (stats.reached_time_limit ? "true" : "false")
+       << "}\n}\n";
     if(!js) { std::cerr << "error: cannot write '" << json << "'" << std::endl; return EXIT_FAILURE; }
   }
   return EXIT_SUCCESS;

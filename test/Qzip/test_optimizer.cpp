@@ -1332,6 +1332,68 @@ void test_context_refreshed_as_new(const std::string& data_dir)
   assert(sorted_points(checked) == sorted_points(plain));
 }
 
+// The time limit (maximum_running_time) cuts the run of the same seed after a batch or an end-game step: a
+// limit of 0 runs nothing, half the time of the full run gives a prefix of its batches (the same numbers of
+// singularities and faces after each of them) with every batch started before the limit, a valid mesh and
+// the flag set; a limit far beyond the run gives its result.
+void test_time_limit(const std::string& data_dir)
+{
+  struct Batch { std::size_t singularities, faces; double elapsed; };
+  struct Visitor : public Q::Default_optimizer_visitor<Surface_mesh>
+  {
+    std::vector<Batch> batches;
+    void on_batch_finished(const Q::Optimizer_statistics& s)
+    {
+      batches.push_back(Batch{ s.number_of_singularities, s.number_of_faces, s.elapsed_seconds });
+    }
+  };
+  const std::string name = data_dir + "quadriflow_gargoyle.obj";
+  auto run = [&](double limit, Surface_mesh& m, Visitor& vis)
+  {
+    if(!read_mesh(name, m)) { std::cerr << "cannot read " << name << std::endl; assert(false); }
+    Q::preprocess_valences(m);
+    return Q::optimize_singularities(m, CGAL::parameters::random_seed(0).visitor(std::ref(vis)).maximum_running_time(limit));
+  };
+  Surface_mesh input;
+  read_mesh(name, input);
+  Q::preprocess_valences(input);
+  const long chi = euler_characteristic(input);
+  const std::size_t inverted_before = Q::compute_mesh_report(input).number_of_inverted_quads;
+  Surface_mesh full, none, half, beyond;
+  Visitor vfull, vnone, vhalf, vbeyond;
+  const Q::Optimizer_result sfull = run(std::numeric_limits<double>::infinity(), full, vfull);
+  assert(!sfull.reached_time_limit && sfull.batch > 4 && sfull.end_game_rounds > 0);
+  assert(euler_characteristic(full) == chi);
+
+  const Q::Optimizer_result snone = run(0., none, vnone);
+  assert(snone.reached_time_limit && snone.batch == 0 && snone.end_game_rounds == 0 && snone.number_of_surgeries == 0);
+  assert(vnone.batches.empty() && sorted_points(none) == sorted_points(input));
+  assert(snone.number_of_singularities == snone.initial_number_of_singularities);
+
+  const double limit = sfull.elapsed_seconds / 2;
+  const Q::Optimizer_result shalf = run(limit, half, vhalf);
+  std::cout << "time limit: full run " << sfull.batch << " batches in " << sfull.elapsed_seconds << " s, limit " << limit
+            << " s: " << shalf.batch << " batches, " << shalf.end_game_rounds << " end-game rounds, "
+            << shalf.number_of_singularities << " singularities (full: " << sfull.number_of_singularities << ")" << std::endl;
+  assert(shalf.reached_time_limit && shalf.batch <= sfull.batch && !vhalf.batches.empty());
+  assert(vhalf.batches.size() <= vfull.batches.size());
+  for(std::size_t k = 0; k < vhalf.batches.size(); ++k)
+  {
+    assert(vhalf.batches[k].singularities == vfull.batches[k].singularities);
+    assert(vhalf.batches[k].faces == vfull.batches[k].faces);
+    if(k > 0) assert(vhalf.batches[k - 1].elapsed < limit); // batch k started before the limit
+  }
+  assert(CGAL::is_valid_polygon_mesh(half) && all_faces_have_degree(half, 4) && euler_characteristic(half) == chi);
+  const Q::Mesh_report rhalf = Q::compute_mesh_report(half);
+  assert(rhalf.total_absolute_defect == shalf.number_of_singularities && rhalf.number_of_faces == shalf.number_of_faces);
+  assert(rhalf.number_of_inverted_quads <= inverted_before);
+  assert(shalf.number_of_singularities >= sfull.number_of_singularities);
+
+  const Q::Optimizer_result sbeyond = run(1e6, beyond, vbeyond);
+  assert(!sbeyond.reached_time_limit && sbeyond.batch == sfull.batch && sbeyond.end_game_rounds == sfull.end_game_rounds);
+  assert(sorted_points(beyond) == sorted_points(full));
+}
+
 // `test_optimizer --same-result-after-undos DATA_DIR` runs test_same_result_after_undos() alone (ctest runs it
 // again under a perturbed heap, see CMakeLists.txt); `test_optimizer [FANDISK]` runs everything.
 int main(int argc, char** argv)
@@ -1344,6 +1406,7 @@ int main(int argc, char** argv)
   }
   const std::string fandisk = argc > 1 ? argv[1] : "data/pmp_fandisk_quads.off";
   test_subdivision_sphere();
+  test_time_limit("data/");
   test_policies();
   test_end_game();
   test_look_ahead();

@@ -24,7 +24,10 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <CGAL/Real_timer.h>
+
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -169,6 +172,16 @@ Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valen
                           away from it is not considered}
     \cgalParamDefault{0.1}
   \cgalParamNEnd
+  \cgalParamNBegin{maximum_running_time}
+    \cgalParamDescription{a time limit in seconds (wall clock, from the call): once it is reached, no batch,
+                          end-game round nor look-ahead chain starts (the one under way finishes, so the run
+                          may exceed the limit by about one batch), and `Optimizer_statistics::reached_time_limit`
+                          is set. The result is that of the run without a limit cut after its last batch or
+                          chain: valid, with no more singularities than the input. The pairing of the
+                          triangles of a hybrid mesh, before the batches, is not cut.}
+    \cgalParamType{`double`}
+    \cgalParamDefault{no limit}
+  \cgalParamNEnd
   \cgalParamNBegin{random_seed}
     \cgalParamDescription{the seed of the `CGAL::Random` that picks the singularities of each batch}
     \cgalParamDefault{0}
@@ -192,6 +205,8 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using parameters::get_parameter_reference;
+  CGAL::Real_timer timer; // for the time limit
+  timer.start();
 
   typedef typename GetGeomTraits<PolygonMesh, NamedParameters>::type Geom_traits;
   typedef typename GetVertexPointMap<PolygonMesh, NamedParameters>::type VPM;
@@ -252,6 +267,8 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
     if(settings.smooth) smoother.settle_on_surface(placed);
   }
 
+  settings.time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
+                                         (std::numeric_limits<double>::infinity)()) - timer.time();
   internal::Batch_optimizer<PolygonMesh, VPM, ECM, FCM, Geom_traits, Scoring, Stop, Visitor_type>
     optimizer(pm, vpm, ecm, fcm, smoother, scoring, stop, visitor, settings);
   static_cast<Optimizer_statistics&>(result) = optimizer.run();

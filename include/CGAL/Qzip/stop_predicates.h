@@ -53,6 +53,9 @@ struct Optimizer_statistics
   /// again there and tried (see `optimize_singularities()`)
   std::size_t number_of_replanned_surgeries = 0;
   std::size_t end_game_rounds = 0;              ///< rounds of the end game (see `optimize_singularities()`), not counted in `batch`
+  /// whether the optimization stopped because its time limit (`maximum_running_time`) was reached: the
+  /// batches (or the end game) would have gone on
+  bool reached_time_limit = false;
   double elapsed_seconds = 0;                   ///< wall-clock time since the start of the optimization
   double scoring_seconds = 0;                   ///< part of it spent finding and scoring candidates
   double execution_seconds = 0;                 ///< part of it spent executing, smoothing and checking surgeries

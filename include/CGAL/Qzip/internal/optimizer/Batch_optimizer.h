@@ -75,6 +75,9 @@ struct Optimizer_settings
   bool look_ahead = true;       // chains of Q-zips that bring a singularity onto one of the opposite sign
   int look_ahead_distance = 14; // the two at most this many edges apart
   int look_ahead_depth = 14;    // Q-zips in a chain
+  // no batch, end-game round nor look-ahead chain starts once run() has taken this many seconds (the time
+  // limit of optimize_singularities() less what it spent before the batches)
+  double time_limit = (std::numeric_limits<double>::infinity)();
 };
 
 // The multiple-choice batches of the paper's Sec. 4.1 (see optimize_singularities()).
@@ -189,10 +192,11 @@ public:
     visitor.on_started(stats);
     for(;;)
     {
-      while(!stop(stats))
+      while(!out_of_time() && !stop(stats))
         run_batch(false);
+      if(out_of_time()) break;
       const std::size_t kept = stats.number_of_surgeries;
-      if(!settings.end_game || !run_end_game()) break;
+      if(!settings.end_game || !run_end_game() || out_of_time()) break;
       // The end game cancelled singularities: the batches go on from there if the stop predicate agrees,
       // asked as after a batch that made progress with the surgeries of the end game.
       stats.batches_without_improvement = stats.batches_without_progress = 0;
@@ -207,6 +211,14 @@ public:
 private:
   // ---------------------------------------------------------------------------------------------
   // helpers
+
+  // whether the time limit is reached (see Optimizer_settings::time_limit); recorded in the statistics
+  bool out_of_time()
+  {
+    if(!(timer.time() >= settings.time_limit)) return false;
+    stats.reached_time_limit = true;
+    return true;
+  }
 
   static bool point_less(const Point& a, const Point& b)
   {
@@ -1078,10 +1090,10 @@ private:
   {
     const std::size_t initial = stats.number_of_singularities;
     std::set<Point, bool(*)(const Point&, const Point&)> failed(&point_less);
-    for(std::size_t round = 0; round < settings.max_end_game_rounds; ++round)
+    for(std::size_t round = 0; round < settings.max_end_game_rounds && !out_of_time(); ++round)
     {
       const bool tried = run_batch(true) > 0;
-      const bool kept = settings.look_ahead && look_ahead_round(failed);
+      const bool kept = settings.look_ahead && !out_of_time() && look_ahead_round(failed);
       if(!tried && !kept) break;
     }
     best_pairing_distance = stats.pairing_distance;
@@ -1116,6 +1128,7 @@ private:
       for(vertex_descriptor s : sources) positions.push_back(get(vpm, s));
       for(std::size_t i = 0; i < sources.size(); ++i)
       {
+        if(out_of_time()) { waiting = false; break; }
         const vertex_descriptor s = sources[i];
         if(failed.count(positions[i]) != 0) continue;
         if(chains.was_near_a_path(s)) { waiting = true; continue; }
