@@ -121,7 +121,9 @@ struct No_progress_stop_predicate
 \ingroup PkgQzipOptimizer
 \cgalModels `QzipStopPredicate`
 
-stops when the elapsed time exceeds a budget (in seconds). The current batch is always finished.
+stops when the elapsed time exceeds a budget (in seconds). The current batch is always finished. Like every
+stop predicate it is only asked before a batch: the end game of `optimize_singularities()` still runs after it
+says stop. To bound the whole run, end game included, pass the named parameter `maximum_running_time`.
 */
 struct Time_budget_stop_predicate
 {
