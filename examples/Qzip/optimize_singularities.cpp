@@ -70,6 +70,13 @@ static bool parse_unsigned(const std::string& s, unsigned long& out)
   return true;
 }
 
+// reads the whole of s as a number (what std::istream reads as a double, nothing after it)
+static bool parse_number(const std::string& s, double& out)
+{
+  std::istringstream is(s);
+  return bool(is >> out) && is.eof();
+}
+
 static void summary(std::ostream& os, const char* title, const Q::Mesh_report& r)
 {
   os << title << ": " << r.number_of_quads << " quads, " << r.number_of_triangles << " triangles ("
@@ -124,20 +131,12 @@ int main(int argc, char** argv)
   { std::cerr << "error: --seed expects a non-negative integer, got '" << seed_s << "'" << std::endl; return EXIT_FAILURE; }
   double time_limit = std::numeric_limits<double>::infinity();
   const std::string limit_s = qzip_example::option_value(argc, argv, "--time-limit");
-  if(!limit_s.empty())
-  {
-    std::istringstream is(limit_s);
-    if(!(is >> time_limit) || !is.eof() || !(time_limit > 0 && time_limit < 1e9))
-    { std::cerr << "error: --time-limit expects a positive number of seconds, got '" << limit_s << "'" << std::endl; return EXIT_FAILURE; }
-  }
+  if(!limit_s.empty() && (!parse_number(limit_s, time_limit) || !(time_limit > 0 && time_limit < 1e9)))
+  { std::cerr << "error: --time-limit expects a positive number of seconds, got '" << limit_s << "'" << std::endl; return EXIT_FAILURE; }
   double feature_angle = -1;
   const std::string angle_s = qzip_example::option_value(argc, argv, "--feature-angle");
-  if(!angle_s.empty())
-  {
-    std::istringstream is(angle_s);
-    if(!(is >> feature_angle) || !is.eof() || !(feature_angle >= 0 && feature_angle <= 180))
-    { std::cerr << "error: --feature-angle expects an angle in degrees in [0, 180], got '" << angle_s << "'" << std::endl; return EXIT_FAILURE; }
-  }
+  if(!angle_s.empty() && (!parse_number(angle_s, feature_angle) || !(feature_angle >= 0 && feature_angle <= 180)))
+  { std::cerr << "error: --feature-angle expects an angle in degrees in [0, 180], got '" << angle_s << "'" << std::endl; return EXIT_FAILURE; }
 
   Mesh mesh;
   std::string error;

@@ -1348,15 +1348,18 @@ void test_time_limit(const std::string& data_dir)
     }
   };
   const std::string name = data_dir + "quadriflow_gargoyle.obj";
-  auto run = [&](double limit, Surface_mesh& m, Visitor& vis)
+  auto read_input = [&](Surface_mesh& m)
   {
     if(!read_mesh(name, m)) { std::cerr << "cannot read " << name << std::endl; assert(false); }
     Q::preprocess_valences(m);
+  };
+  auto run = [&](double limit, Surface_mesh& m, Visitor& vis)
+  {
+    read_input(m);
     return Q::optimize_singularities(m, CGAL::parameters::random_seed(0).visitor(std::ref(vis)).maximum_running_time(limit));
   };
   Surface_mesh input;
-  read_mesh(name, input);
-  Q::preprocess_valences(input);
+  read_input(input);
   const long chi = euler_characteristic(input);
   const std::size_t inverted_before = Q::compute_mesh_report(input).number_of_inverted_quads;
   Surface_mesh full, none, half, beyond;

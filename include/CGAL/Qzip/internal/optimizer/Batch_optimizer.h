@@ -194,7 +194,6 @@ public:
     {
       while(!out_of_time() && !stop(stats))
         run_batch(false);
-      if(out_of_time()) break;
       const std::size_t kept = stats.number_of_surgeries;
       if(!settings.end_game || !run_end_game() || out_of_time()) break;
       // The end game cancelled singularities: the batches go on from there if the stop predicate agrees,
