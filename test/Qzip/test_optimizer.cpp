@@ -599,17 +599,19 @@ void test_face_count_tolerance(const std::string& data_dir)
 
 // ten batches on the Catmull-Clark sphere of level 4 with the given Optimizer_settings::sparse_pairing_distance;
 // checks that each batch executes all its candidates (or the best half, `all` false) and the invariants
+// (`skip_chosen_targets`: see Optimizer_settings; `first_candidates`: the number of candidates of the first batch)
 template <typename Mesh>
-Q::Optimizer_statistics run_batches(Mesh& m, double sparse_pairing_distance, bool all)
+Q::Optimizer_statistics run_batches(Mesh& m, double sparse_pairing_distance, bool all, bool skip_chosen_targets = true,
+                                    std::size_t* first_candidates = nullptr)
 {
   struct Visitor : public Q::Default_optimizer_visitor<Mesh>
   {
     bool all = false;
-    std::size_t batches = 0;
+    std::size_t batches = 0, first = 0;
     void on_batch_scored(const Q::Optimizer_statistics& s, std::size_t n)
     {
       assert(n == (all ? s.candidates_in_last_batch : (s.candidates_in_last_batch + 1) / 2));
-      ++batches;
+      if(batches++ == 0) first = n;
     }
   } vis;
   vis.all = all;
@@ -621,6 +623,7 @@ Q::Optimizer_statistics run_batches(Mesh& m, double sparse_pairing_distance, boo
   Q::internal::Optimizer_settings settings;
   settings.end_game = false;
   settings.sparse_pairing_distance = sparse_pairing_distance;
+  settings.skip_chosen_targets = skip_chosen_targets;
   const Q::Default_scoring scoring;
   const Q::Batch_count_stop_predicate stop(10);
   Q::internal::Quad_smoother<Mesh, Vpm, Ecm, Fcm, K> smoother(m, get(CGAL::vertex_point, m), Ecm(), Fcm(), true);
@@ -629,6 +632,7 @@ Q::Optimizer_statistics run_batches(Mesh& m, double sparse_pairing_distance, boo
   const Q::Optimizer_statistics s = optimizer.run();
   check_result(m, chi, s);
   assert(vis.batches == s.batch && s.batch == 10);
+  if(first_candidates != nullptr) *first_candidates = vis.first;
   return s;
 }
 
@@ -651,6 +655,18 @@ void test_all_candidates_when_sparse()
   assert(are_isomorphic(all_sm, all_ph));
   assert(sorted_points(all_sm) == sorted_points(all_ph));
   assert(all.number_of_surgeries > half.number_of_surgeries);
+
+  // A source that is the target of an earlier source's candidate is not scored in a sparse batch: on the sphere,
+  // whose singularities come in pairs closest to each other, the first batch (the same mesh and the same random
+  // sources either way) chooses fewer candidates than when every source is scored, and both runs keep the
+  // invariants.
+  Surface_mesh skipping_sm, scoring_all_sm;
+  std::size_t skipping = 0, scoring_all = 0;
+  run_batches(skipping_sm, 0., true, true, &skipping);
+  run_batches(scoring_all_sm, 0., true, false, &scoring_all);
+  std::cout << "  candidates of the first sparse batch: " << skipping << " (every source scored: " << scoring_all << ")"
+            << std::endl;
+  assert(skipping > 0 && skipping < scoring_all);
 }
 
 // the first n singularities other than x1 and x2 that the context gives at v (a vertex of a closed mesh),

@@ -69,9 +69,13 @@ struct Optimizer_settings
   // a batch executes the best half of the candidates it chose (the paper's scheme), or all of them, best
   // first, when the singularities are sparse: at least this many edges, on average, from their partners
   // (Optimizer_statistics::pairing_distance over the number of singularities). Refining a mesh doubles its
-  // distances: the corpus meshes stay below 20 in every batch, the gargoyle's Catmull-Clark refinements
-  // start at 10 (CC2), 20 (CC3) and 40 (CC4), and pass 25 as their closest pairs cancel.
+  // distances: the corpus meshes stay below 20 in most batches (the rocker arm's tail, 14 singularities at 352
+  // edges, passes 25), the gargoyle's Catmull-Clark refinements start at 10 (CC2), 20 (CC3) and 40 (CC4), and
+  // pass 25 as their closest pairs cancel.
   double sparse_pairing_distance = 25;
+  // in a sparse batch, a source that is the target of the candidate an earlier source chose is not scored
+  // (see Batch_optimizer::run_batch())
+  bool skip_chosen_targets = true;
   bool look_ahead = true;       // chains of Q-zips that bring a singularity onto one of the opposite sign
   int look_ahead_distance = 14; // the two at most this many edges apart
   int look_ahead_depth = 14;    // Q-zips in a chain
@@ -988,6 +992,12 @@ private:
     // chosen surgery whose execution fails is rolled back exactly by the executor)
     const auto plan_np = Qzip::parameters::simulate_chain(false, Qzip::parameters::face_is_constrained_map(fcm,
                            CGAL::parameters::edge_is_constrained_map(ecm).vertex_point_map(vpm)));
+    // In a sparse batch, which executes every chosen candidate, a source that is the target of the candidate an
+    // earlier source chose is not scored: its own candidate would start at a singularity that this one operates on,
+    // so only one of the two could be executed (the other is skipped). The pair is moved from the earlier source,
+    // and the time the target's scoring took goes to more batches (RESULTS.md, session 15).
+    const bool skip_chosen_targets = !end_game && settings.skip_chosen_targets && is_sparse();
+    std::vector<vertex_descriptor> chosen_targets;
     std::vector<Scored> chosen;
     for(vertex_descriptor s : sources)
     {
@@ -996,8 +1006,12 @@ private:
         if(has_opposite_within(s, 2)) cancelling_candidates(s, plan_np, chosen);
         continue;
       }
+      if(skip_chosen_targets && std::find(chosen_targets.begin(), chosen_targets.end(), s) != chosen_targets.end())
+        continue;
       Scored best;
-      if(best_candidate(s, plan_np, best)) chosen.push_back(std::move(best));
+      if(!best_candidate(s, plan_np, best)) continue;
+      chosen_targets.push_back(best.plan.target);
+      chosen.push_back(std::move(best));
     }
     std::stable_sort(chosen.begin(), chosen.end(), [end_game](const Scored& a, const Scored& b)
     {
