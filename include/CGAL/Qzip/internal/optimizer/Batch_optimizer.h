@@ -27,6 +27,7 @@
 #include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
 
+#include <boost/container/small_vector.hpp>
 #include <boost/functional/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 
@@ -805,7 +806,8 @@ private:
   }
 
   // a shortest path from s to t through passable vertices on the mesh as it is now, if one has at most
-  // `max_length` edges (empty otherwise): the path to t is known when t is discovered
+  // `max_length` edges (empty otherwise): the path to t is known when t is discovered. One walk around each
+  // vertex expanded both tells whether it is passable and lists its neighbors.
   std::vector<vertex_descriptor> shortest_path_now(vertex_descriptor s, vertex_descriptor t, std::size_t max_length)
   {
     if(s == t) return std::vector<vertex_descriptor>(1, s);
@@ -813,12 +815,24 @@ private:
     std::vector<vertex_descriptor> queue(1, s);
     std::vector<std::size_t> from(1, 0), level(1, 0);
     put(search_stamp, s, search_epoch);
+    boost::container::small_vector<vertex_descriptor, 8> ring;
     for(std::size_t i = 0; i < queue.size(); ++i)
     {
-      if(level[i] >= max_length || (i > 0 && !is_passable_now(queue[i]))) continue;
+      if(level[i] >= max_length) continue;
+      ring.clear();
+      bool passable = true;
       for(halfedge_descriptor h : halfedges_around_target(halfedge(queue[i], pm), pm))
       {
-        const vertex_descriptor w = source(h, pm);
+        if(i > 0 && (is_border_edge(h, pm) || get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm)))))
+        {
+          passable = false;
+          break;
+        }
+        ring.push_back(source(h, pm));
+      }
+      if(!passable) continue;
+      for(const vertex_descriptor w : ring)
+      {
         if(get(search_stamp, w) == search_epoch) continue;
         if(w == t)
         {
