@@ -40,7 +40,9 @@ one side of the path, which widens the remaining quads across the path; a chain 
 strip, which narrows them. For each operation, with `along` the length of the path edge and `across`
 the length of the quad's sides that leave the path, the term adds `log(across / along)` for a collapse
 (negative, i.e. good, when the quads are squeezed across the path) and `-log(across / along)` for a
-split (good when they are stretched across it). Only the plan is used.
+split (good when they are stretched across it); the sum is divided by the square root of the number of
+operations, so that a long path does not win by the number of its terms alone (their sum grows with the
+length of the path, and so do the chance fluctuations of a sum, as its square root). Only the plan is used.
 */
 struct Isotropy_term
 {
@@ -48,13 +50,15 @@ struct Isotropy_term
   double operator()(const Qzip_candidate<PolygonMesh>& c, Context& ctx) const
   {
     double s = 0;
+    std::size_t n = 0;
     internal::for_each_strip_quad(*c.plan, ctx, [&](Strip_operation op, typename boost::graph_traits<PolygonMesh>::face_descriptor,
                                                     double along, double across, double)
     {
       const double r = std::log(across / along);
       s += is_collapse(op) ? r : -r;
+      ++n;
     });
-    return s;
+    return n > 0 ? s / std::sqrt(double(n)) : s;
   }
 };
 

@@ -24,7 +24,8 @@ namespace Qzip {
 The uniform sizing control of the paper's Sec. 4.1: no collapse where quads are already large, no
 split where they are already small. For each operation of the plan, with `a` the area of the quad it
 acts on (see `Isotropy_term`) divided by the geometric mean of the face areas of the input, the term adds `log(a)` for
-a collapse and `-log(a)` for a split. Only the plan is used.
+a collapse and `-log(a)` for a split; the sum is divided by the square root of the number of operations
+(see `Isotropy_term`). Only the plan is used.
 */
 struct Sizing_term
 {
@@ -32,6 +33,7 @@ struct Sizing_term
   double operator()(const Qzip_candidate<PolygonMesh>& c, Context& ctx) const
   {
     double s = 0;
+    std::size_t n = 0;
     const double mean = ctx.mean_face_area();
     internal::for_each_strip_quad(*c.plan, ctx, [&](Strip_operation op, typename boost::graph_traits<PolygonMesh>::face_descriptor,
                                                     double, double, double area)
@@ -40,8 +42,9 @@ struct Sizing_term
       if(!(a > 0)) return;
       const double r = std::log(a);
       s += is_collapse(op) ? r : -r;
+      ++n;
     });
-    return s;
+    return n > 0 ? s / std::sqrt(double(n)) : s;
   }
 };
 
