@@ -743,12 +743,12 @@ void make_genus3_plate(Surface_mesh& m)
 }
 
 // the genus-3 plate where the batches and the plain end game stop above the optimum (a v3-v5 pair or more
-// left), for the first such seed from 0 on, which it returns. Since the isotropy and sizing terms are divided by
+// left), for the first such seed from 18 on, which it returns. Since the isotropy and sizing terms are divided by
 // the square root of the number of operations, the batches reach the optimum on seeds 0 to 17 (before, on 0 to
-// 25).
+// 25): the search starts at 18 so as not to optimize the plate 18 more times on every run.
 unsigned int make_plate_where_batches_stop(Surface_mesh& m)
 {
-  unsigned int seed = 0;
+  unsigned int seed = 18;
   for(; seed < 100; ++seed)
   {
     make_genus3_plate(m);

@@ -801,8 +801,15 @@ private:
   bool is_passable_now(vertex_descriptor v) const
   {
     for(halfedge_descriptor h : halfedges_around_target(halfedge(v, pm), pm))
-      if(is_border_edge(h, pm) || get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm)))) return false;
+      if(blocks_passage_now(h)) return false;
     return true;
+  }
+
+  // whether the halfedge h, ending at a vertex, makes it impassable: its edge is on the border or
+  // constrained, or its face is protected
+  bool blocks_passage_now(halfedge_descriptor h) const
+  {
+    return is_border_edge(h, pm) || get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm)));
   }
 
   // a shortest path from s to t through passable vertices on the mesh as it is now, if one has at most
@@ -823,7 +830,7 @@ private:
       bool passable = true;
       for(halfedge_descriptor h : halfedges_around_target(halfedge(queue[i], pm), pm))
       {
-        if(i > 0 && (is_border_edge(h, pm) || get(ecm, edge(h, pm)) || (!is_border(h, pm) && get(fcm, face(h, pm)))))
+        if(i > 0 && blocks_passage_now(h))
         {
           passable = false;
           break;
