@@ -25,8 +25,10 @@
 // optimizes; the Catmull-Clark and genus-3 meshes, built in memory, are copied.
 // The summary line of each mesh on stderr also gives the median CPU time of the process (std::clock())
 // during optimize_singularities(), less sensitive than wall time to other jobs on the machine, and the
-// median CPU time until the number of singularities last changed (the plateau; the tables' last column):
-// a run goes on for a while after it, until its stop predicate gives up.
+// median CPU time until the number of singularities last changed (the plateau; the tables' "to plateau"
+// column): a run goes on for a while after it, until its stop predicate gives up. The tables' "to the bound"
+// column is the CPU time until the count first was within the target for closed pure-quad meshes
+// (2·|4χ| plus 1% of the input's faces; "n/a" for the other meshes).
 
 #include "qzip_test_utils.h"
 #include "qzip_input_surface.h"
@@ -102,8 +104,9 @@ struct Bench_stop
   }
 };
 
-// records when the number of singularities changed (CPU time of the process since `start`, set by the
-// caller to the call of optimize_singularities()), and prints every batch with --trace
+// records when the number of singularities changed and when it first reached the target (CPU time of
+// the process since `start`, set by the caller to the call of optimize_singularities()), and prints every batch
+// with --trace
 struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
 {
   bool print = false;
@@ -111,9 +114,14 @@ struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
   // the CPU seconds at which the count last took its current value
   double count_since = 0;
   std::size_t count = 0;
+  // the target count (see target_count(), negative: none) and the CPU seconds at which the count first was at
+  // most that (negative: not yet)
+  double target = -1;
+  double target_since = -1;
   double cpu_seconds() const { return double(std::clock() - start) / CLOCKS_PER_SEC; }
   void record(const Q::Optimizer_statistics& s)
   {
+    if(target >= 0 && target_since < 0 && double(s.number_of_singularities) <= target) target_since = cpu_seconds();
     if(s.number_of_singularities == count) return;
     count = s.number_of_singularities;
     count_since = cpu_seconds();
@@ -122,6 +130,7 @@ struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
   {
     count = s.number_of_singularities;
     count_since = cpu_seconds();
+    if(target >= 0 && double(count) <= target) target_since = count_since;
   }
   void on_batch_finished(const Q::Optimizer_statistics& s)
   {
@@ -143,6 +152,9 @@ struct Row
   double seconds = 0;
   double plateau_seconds = 0; // CPU seconds until the final number of singularities was reached (median)
   double cpu_seconds = 0;     // CPU seconds of optimize_singularities() (median)
+  // CPU seconds until the number of singularities first was at most the target (see target_count()): the
+  // median over the runs, negative if a run never reached it or the mesh has no target
+  double target_seconds = -1;
   std::array<double, 3> off_surface = {{ 0, 0, 0 }}; // see off_surface()
   std::string exact;
   std::size_t fingerprint = 0;
@@ -159,6 +171,14 @@ static std::size_t singular(const Q::Mesh_report& r)
 {
   return r.number_of_interior_valence_3_like + r.number_of_interior_valence_5_like +
          r.number_of_boundary_negative_defects + r.number_of_boundary_positive_defects;
+}
+
+// the target for a closed pure-quad mesh, 2·|4χ| plus 1% of its faces (negative when the report has no
+// lower bound: a border, or triangles)
+static double target_count(const Q::Mesh_report& r)
+{
+  if(!r.has_singularity_lower_bound) return -1;
+  return 2. * double(r.singularity_lower_bound) + 0.01 * double(r.number_of_faces);
 }
 
 // how far the vertices of `result` lie from the surface of `input` (see qzip_test::Input_surface), in mean edge
@@ -210,7 +230,7 @@ static Row run(const std::string& name, const Input& input, int runs, bool measu
   Mesh pre;
   input(pre);
   row.before = Q::compute_mesh_report(pre);
-  std::vector<double> times, cpu, plateau;
+  std::vector<double> times, cpu, plateau, to_target;
   for(int i = 0; i < runs; ++i)
   {
     Mesh m;
@@ -221,12 +241,14 @@ static Row run(const std::string& name, const Input& input, int runs, bool measu
     Trace_visitor tracer;
     tracer.print = trace && i + 1 == runs;
     tracer.start = c0;
+    tracer.target = target_count(row.before);
     row.stats = Q::optimize_singularities(m, Q::parameters::stop_predicate(Bench_stop(),
                                                  CGAL::parameters::random_seed(seed).visitor(std::ref(tracer)).maximum_running_time(time_limit)));
     t.stop();
     times.push_back(t.time());
     cpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
     plateau.push_back(tracer.count_since);
+    to_target.push_back(tracer.target_since);
     if(i + 1 == runs)
     {
       row.after = Q::compute_mesh_report(m);
@@ -249,6 +271,8 @@ static Row run(const std::string& name, const Input& input, int runs, bool measu
   row.seconds = times[times.size() / 2];
   row.plateau_seconds = plateau[plateau.size() / 2];
   row.cpu_seconds = cpu[cpu.size() / 2];
+  std::sort(to_target.begin(), to_target.end());
+  if(to_target.front() >= 0) row.target_seconds = to_target[to_target.size() / 2];
   std::cerr << "  " << name << ": " << singular(row.before) << " -> " << singular(row.after) << " singularities, "
             << row.before.number_of_faces << " -> " << row.after.number_of_faces << " faces, " << row.stats.batch << " batches + " << row.stats.end_game_rounds << " end-game rounds, "
             << fmt(row.seconds) << " s (CPU " << fmt(cpu[cpu.size() / 2]) << " s, final count after "
@@ -261,9 +285,9 @@ static Row run(const std::string& name, const Input& input, int runs, bool measu
 static void print_header(bool measure)
 {
   std::cout << "| mesh | faces before → after (Δ%) | singularities before → after | v3 / v5 after (interior) | bound 2·|4χ| + 1% F | "
-               "min / mean SJ before | min / mean SJ after | inverted after | off surface: max / mean (edges), vertices > 0.1 | batches | time (s) | to plateau (CPU s) |"
+               "min / mean SJ before | min / mean SJ after | inverted after | off surface: max / mean (edges), vertices > 0.1 | batches | time (s) | to plateau (CPU s) | to the bound (CPU s) |"
             << (measure ? " exact predictions |" : "") << "\n"
-            << "|---|---|---|---|---|---|---|---|---|---|---|---|" << (measure ? "---|" : "") << "\n";
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|" << (measure ? "---|" : "") << "\n";
 }
 
 static void print_row(const Row& r, bool measure)
@@ -274,7 +298,7 @@ static void print_row(const Row& r, bool measure)
             << r.after.number_of_interior_valence_3_like << " / " << r.after.number_of_interior_valence_5_like << " | ";
   if(r.before.has_singularity_lower_bound)
   {
-    const double target = 2. * double(r.before.singularity_lower_bound) + 0.01 * double(r.before.number_of_faces);
+    const double target = target_count(r.before);
     std::cout << r.before.singularity_lower_bound << ": " << fmt(target, 0) << (double(singular(r.after)) <= target ? " ✓" : " ✗");
   }
   else std::cout << "n/a";
@@ -282,7 +306,9 @@ static void print_row(const Row& r, bool measure)
             << fmt(r.after.min_scaled_jacobian) << " / " << fmt(r.after.mean_scaled_jacobian) << " | "
             << r.after.number_of_inverted_quads << (r.before.number_of_inverted_quads > 0 ? " (input: " + std::to_string(r.before.number_of_inverted_quads) + ")" : std::string())
             << " | " << fmt(r.off_surface[0], 2) << " / " << fmt(r.off_surface[1], 4) << ", " << r.off_surface[2]
-            << " | " << r.stats.batch << " | " << fmt(r.seconds) << " | " << fmt(r.plateau_seconds) << " |" << (measure ? " " + r.exact + " |" : "") << "\n";
+            << " | " << r.stats.batch << " | " << fmt(r.seconds) << " | " << fmt(r.plateau_seconds) << " | "
+            << (r.target_seconds >= 0 ? fmt(r.target_seconds) : r.before.has_singularity_lower_bound ? "not reached" : "n/a")
+            << " |" << (measure ? " " + r.exact + " |" : "") << "\n";
 }
 
 // --seeds N: one run for each of the seeds 0 to N-1, and the spread of the results (the trajectory of a run,
@@ -290,14 +316,16 @@ static void print_row(const Row& r, bool measure)
 static void print_spread_header()
 {
   std::cout << "| mesh | singularities before | after: min / median / max | faces Δ%: min / max | inverted after: max | "
-               "off surface (edges): max / largest mean | to plateau (CPU s): min / median / max | CPU s: min / median / max |\n"
-            << "|---|---|---|---|---|---|---|---|\n";
+               "off surface (edges): max / largest mean | to plateau (CPU s): min / median / max | CPU s: min / median / max | "
+               "to the bound (CPU s): min / median / max |\n"
+            << "|---|---|---|---|---|---|---|---|---|\n";
 }
 
 static void print_spread(const std::string& name, const Input& input, unsigned int seeds)
 {
-  std::vector<double> after, faces_change, plateau, cpu;
+  std::vector<double> after, faces_change, plateau, cpu, to_target;
   std::size_t before = 0, inverted = 0;
+  bool has_target = false;
   double off_max = 0, off_mean = 0;
   for(unsigned int s = 0; s < seeds; ++s)
   {
@@ -310,6 +338,8 @@ static void print_spread(const std::string& name, const Input& input, unsigned i
     inverted = (std::max)(inverted, r.after.number_of_inverted_quads);
     plateau.push_back(r.plateau_seconds);
     cpu.push_back(r.cpu_seconds);
+    has_target = r.before.has_singularity_lower_bound;
+    if(r.target_seconds >= 0) to_target.push_back(r.target_seconds);
     off_max = (std::max)(off_max, r.off_surface[0]);
     off_mean = (std::max)(off_mean, r.off_surface[1]);
   }
@@ -322,7 +352,11 @@ static void print_spread(const std::string& name, const Input& input, unsigned i
   std::cout << "| " << name << " | " << before << " | " << spread(after, 0) << " | " << fmt(faces_change.front(), 1)
             << " / " << fmt(faces_change.back(), 1) << " | " << inverted << " | " << fmt(off_max, 2) << " / "
             << fmt(off_mean, 4) << " | " << spread(plateau, 2) << " | "
-            << spread(cpu, 2) << " |" << std::endl;
+            << spread(cpu, 2) << " | ";
+  if(!has_target) std::cout << "n/a";
+  else if(to_target.size() == seeds) std::cout << spread(to_target, 2);
+  else std::cout << "reached on " << to_target.size() << " of " << seeds << " seeds";
+  std::cout << " |" << std::endl;
 }
 
 int main(int argc, char** argv)
