@@ -119,9 +119,13 @@ struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
   double target = -1;
   double target_since = -1;
   double cpu_seconds() const { return double(std::clock() - start) / CLOCKS_PER_SEC; }
+  void record_target(std::size_t n)
+  {
+    if(target >= 0 && target_since < 0 && double(n) <= target) target_since = cpu_seconds();
+  }
   void record(const Q::Optimizer_statistics& s)
   {
-    if(target >= 0 && target_since < 0 && double(s.number_of_singularities) <= target) target_since = cpu_seconds();
+    record_target(s.number_of_singularities);
     if(s.number_of_singularities == count) return;
     count = s.number_of_singularities;
     count_since = cpu_seconds();
@@ -130,7 +134,7 @@ struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
   {
     count = s.number_of_singularities;
     count_since = cpu_seconds();
-    if(target >= 0 && double(count) <= target) target_since = count_since;
+    record_target(count);
   }
   void on_batch_finished(const Q::Optimizer_statistics& s)
   {
