@@ -557,7 +557,7 @@ void test_replanned_after_undos(const std::string& data_dir)
     Visitor vis;
     typedef CGAL::property_map_selector<Surface_mesh, CGAL::vertex_point_t>::type Vpm;
     Q::internal::Quad_smoother<Surface_mesh, Vpm, Ecm, Fcm, K> smoother(m, get(CGAL::vertex_point, m), Ecm(), Fcm(), true);
-    Q::internal::Batch_optimizer<Surface_mesh, Vpm, Ecm, Fcm, K, Q::Default_scoring, Q::Batch_count_stop_predicate, Visitor>
+    Q::internal::Batch_optimizer<Surface_mesh, Vpm, Ecm, Fcm, K>
       optimizer(m, get(CGAL::vertex_point, m), Ecm(), Fcm(), smoother, scoring, stop, vis, settings);
     stats[replan] = optimizer.run();
     assert(CGAL::is_valid_polygon_mesh(m) && all_faces_have_degree(m, 4) && euler_characteristic(m) == chi);
@@ -627,7 +627,7 @@ Q::Optimizer_statistics run_batches(Mesh& m, double sparse_pairing_distance, boo
   const Q::Default_scoring scoring;
   const Q::Batch_count_stop_predicate stop(10);
   Q::internal::Quad_smoother<Mesh, Vpm, Ecm, Fcm, K> smoother(m, get(CGAL::vertex_point, m), Ecm(), Fcm(), true);
-  Q::internal::Batch_optimizer<Mesh, Vpm, Ecm, Fcm, K, Q::Default_scoring, Q::Batch_count_stop_predicate, Visitor>
+  Q::internal::Batch_optimizer<Mesh, Vpm, Ecm, Fcm, K>
     optimizer(m, get(CGAL::vertex_point, m), Ecm(), Fcm(), smoother, scoring, stop, vis, settings);
   const Q::Optimizer_statistics s = optimizer.run();
   check_result(m, chi, s);

@@ -220,7 +220,6 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
             Default_stop_predicate>::type Stop;
   typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::visitor_t, NamedParameters,
             Default_optimizer_visitor<PolygonMesh> >::reference Visitor;
-  typedef typename std::remove_reference<Visitor>::type Visitor_type;
 
   const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_property_map(CGAL::vertex_point, pm));
   const ECM ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
@@ -269,7 +268,7 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
 
   settings.time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
                                          (std::numeric_limits<double>::infinity)()) - timer.time();
-  internal::Batch_optimizer<PolygonMesh, VPM, ECM, FCM, Geom_traits, Scoring, Stop, Visitor_type>
+  internal::Batch_optimizer<PolygonMesh, VPM, ECM, FCM, Geom_traits>
     optimizer(pm, vpm, ecm, fcm, smoother, scoring, stop, visitor, settings);
   static_cast<Optimizer_statistics&>(result) = optimizer.run();
   result.number_of_triangles = Pairing::number_of_triangles(pm);

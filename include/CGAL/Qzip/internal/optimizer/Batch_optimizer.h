@@ -15,10 +15,10 @@
 #include <CGAL/Qzip/internal/optimizer/regions.h>
 #include <CGAL/Qzip/smoothing.h>
 #include <CGAL/Qzip/stop_predicates.h>
-#include <CGAL/Qzip/Optimizer_visitor_base.h>
 #include <CGAL/Qzip/Scoring/Qzip_candidate.h>
 #include <CGAL/Qzip/Scoring/Scoring_context.h>
 #include <CGAL/Qzip/internal/vertex_defect.h>
+#include <CGAL/Qzip/internal/optimizer/Erased_policies.h>
 #include <CGAL/Qzip/internal/optimizer/Look_ahead.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -86,8 +86,9 @@ struct Optimizer_settings
 };
 
 // The multiple-choice batches of the paper's Sec. 4.1 (see optimize_singularities()).
+// The scoring functor, the stop predicate and the visitor are held behind fixed types (see Erased_policies.h).
 template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap, typename FaceIsConstrainedMap,
-          typename GeomTraits, typename Scoring, typename StopPredicate, typename Visitor>
+          typename GeomTraits>
 class Batch_optimizer
 {
   typedef boost::graph_traits<PolygonMesh> GT;
@@ -96,6 +97,8 @@ class Batch_optimizer
   typedef typename GT::face_descriptor face_descriptor;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
   typedef Scoring_context<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap> Context;
+  typedef Erased_scoring<PolygonMesh, Context> Scoring;
+  typedef Erased_optimizer_visitor<PolygonMesh> Visitor;
   typedef Quad_smoother<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap, GeomTraits> Smoother;
   typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<unsigned int> >::type Stamp_map;
   typedef typename boost::property_map<PolygonMesh, CGAL::dynamic_vertex_property_t<std::size_t> >::type Id_map;
@@ -121,9 +124,9 @@ class Batch_optimizer
   VertexPointMap vpm;
   EdgeIsConstrainedMap ecm;
   FaceIsConstrainedMap fcm;
-  const Scoring& scoring;
-  const StopPredicate& stop;
-  Visitor& visitor;
+  const Scoring scoring;
+  const Erased_stop_predicate stop;
+  Visitor visitor;
   Optimizer_settings settings;
 
   Context ctx;
@@ -161,9 +164,11 @@ class Batch_optimizer
 public:
   // `smoother` (its reference surface: the mesh as the caller was given it; projecting unless smoothing is
   // off) smooths and projects the scars; its quality floor becomes that of `settings`
+  // (`scoring` and `stop` are copied, `visitor` is called by reference)
+  template <typename ScoringFunctor, typename StopPredicate, typename OptimizerVisitor>
   Batch_optimizer(PolygonMesh& pm, VertexPointMap vpm, EdgeIsConstrainedMap ecm, FaceIsConstrainedMap fcm,
-                  Smoother& smoother, const Scoring& scoring, const StopPredicate& stop, Visitor& visitor,
-                  const Optimizer_settings& settings)
+                  Smoother& smoother, const ScoringFunctor& scoring, const StopPredicate& stop,
+                  OptimizerVisitor& visitor, const Optimizer_settings& settings)
     : pm(pm), vpm(vpm), ecm(ecm), fcm(fcm), scoring(scoring), stop(stop), visitor(visitor), settings(settings),
       ctx(pm, vpm, ecm, fcm), smoother(smoother), rng(settings.seed),
       search_stamp(get(CGAL::dynamic_vertex_property_t<unsigned int>(), pm)),
