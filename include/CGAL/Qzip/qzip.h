@@ -384,7 +384,7 @@ Qzip_result<PolygonMesh> run_qzip(PolygonMesh& pm, Operation_log<PolygonMesh, Ve
                                                    default_visitor);
   Reverse_recorder<PolygonMesh, User_visitor> recorder(pm, plan, user);
   const auto np_recording = np.visitor(std::ref(recorder));
-  Chain_executor<PolygonMesh, VertexPointMap, std::decay_t<decltype(np_recording)> > exec(pm, log, np_recording);
+  Chain_executor_of<PolygonMesh, VertexPointMap, std::decay_t<decltype(np_recording)> > exec(pm, log, np_recording);
   Qzip_result<PolygonMesh> r = exec.run(plan);
   recorder.make_reverse(r, exec.cancelled_singularities(), exec.expected_faces_of_live_vertices());
   return r;

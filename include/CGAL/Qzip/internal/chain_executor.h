@@ -51,7 +51,10 @@ namespace internal {
 // An executor can run plan after plan (a simulation runs one on copy after copy): its bookkeeping is
 // reset at every run and keeps its buffers (Descriptor_hash_map), so that a run allocates little besides
 // the operation log's entries and the result.
-template <typename PolygonMesh, typename VertexPointMap, typename NamedParameters>
+//
+// It is a template on what it reads of the named parameters (see Chain_executor_of), not on their pack:
+// packs that differ only in other parameters share one executor, compiled once.
+template <typename PolygonMesh, typename VertexPointMap, typename ECM, typename FCM, typename Visitor>
 class Chain_executor
 {
   typedef boost::graph_traits<PolygonMesh> GT;
@@ -60,13 +63,6 @@ class Chain_executor
   typedef typename GT::edge_descriptor edge_descriptor;
   typedef typename GT::face_descriptor face_descriptor;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
-
-  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::edge_is_constrained_t, NamedParameters,
-            Static_boolean_property_map<edge_descriptor, false> >::type ECM;
-  typedef typename CGAL::internal_np::Lookup_named_param_def<Qzip::internal_np::face_is_constrained_t, NamedParameters,
-            Static_boolean_property_map<face_descriptor, false> >::type FCM;
-  typedef typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::visitor_t, NamedParameters,
-            Default_qzip_visitor<PolygonMesh> >::reference Visitor;
 
   typedef typename Kernel_traits<Point>::Kernel Geom_traits;
 
@@ -116,6 +112,7 @@ class Chain_executor
   std::size_t collapses = 0, splits = 0, cleanups = 0;
 
 public:
+  template <typename NamedParameters>
   Chain_executor(PolygonMesh& pm, Operation_log<PolygonMesh, VertexPointMap>& log, const NamedParameters& np)
     : pm(pm), log(log),
       ecm(parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::edge_is_constrained),
@@ -631,6 +628,16 @@ private:
   halfedge_descriptor last_quad;
   std::size_t failed_step = 0;
 };
+
+// the executor of the named parameters `NamedParameters`: their constrained edges and faces, and their visitor
+template <typename PolygonMesh, typename VertexPointMap, typename NamedParameters>
+using Chain_executor_of = Chain_executor<PolygonMesh, VertexPointMap,
+  typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::edge_is_constrained_t, NamedParameters,
+    Static_boolean_property_map<typename boost::graph_traits<PolygonMesh>::edge_descriptor, false> >::type,
+  typename CGAL::internal_np::Lookup_named_param_def<Qzip::internal_np::face_is_constrained_t, NamedParameters,
+    Static_boolean_property_map<typename boost::graph_traits<PolygonMesh>::face_descriptor, false> >::type,
+  typename CGAL::internal_np::Lookup_named_param_def<CGAL::internal_np::visitor_t, NamedParameters,
+    Default_qzip_visitor<PolygonMesh> >::reference>;
 
 } // namespace internal
 } // namespace Qzip

@@ -32,7 +32,7 @@ namespace Qzip {
 namespace internal {
 // declared first: when chain_executor.h is included first, it includes surgery_plan.h, which includes
 // this file, and so qzip.h below, before the executor is defined
-template <typename PolygonMesh, typename VertexPointMap, typename NamedParameters> class Chain_executor;
+template <typename PolygonMesh, typename VertexPointMap, typename ECM, typename FCM, typename Visitor> class Chain_executor;
 } // namespace internal
 } // namespace Qzip
 } // namespace CGAL
@@ -182,7 +182,7 @@ class Chain_simulation
   // the executor, its operation log and its watcher, kept from plan to plan for their buffers
   Operation_log<Local_mesh, Local_point_map> log;
   Cut_watcher watcher;
-  Chain_executor<Local_mesh, Local_point_map, Executor_parameters> executor;
+  Chain_executor<Local_mesh, Local_point_map, typename Local_ecm::type, typename Local_fcm::type, Cut_watcher&> executor;
 
   bool is_copied(face_descriptor f) const { return f != GT::null_face() && face_copy.find(f) != nullptr; }
 
