@@ -3,7 +3,7 @@
 // twice (in alternating order): with the simulation of its execution (the default) and without
 // (`simulate_chain(false)`), to measure what the simulation costs; and executed twice (in alternating
 // order, undone in between): by `execute_qzip()`, which records the reverse Q-zip, and by the bare executor
-// (internal::Chain_executor), to measure what the recording costs.
+// (internal::Chain_executor_of), to measure what the recording costs.
 //
 // usage: benchmark_qzip [N per mesh = 2000] [mesh files...]   (default: bundled meshes + shared corpus)
 
@@ -95,8 +95,8 @@ void run(const std::string& file, std::size_t count, std::vector<Sample>& all)
   Q::Qzip_history<Surface_mesh> history(m);
   std::vector<Sample> samples;
   std::size_t refused = 0, attempts = 0, unpaired = 0, simulation_refused = 0;
-  typedef Q::internal::Chain_executor<Surface_mesh, boost::property_map<Surface_mesh, CGAL::vertex_point_t>::type,
-                                      CGAL::parameters::Default_named_parameters> Bare_executor;
+  typedef Q::internal::Chain_executor_of<Surface_mesh, boost::property_map<Surface_mesh, CGAL::vertex_point_t>::type,
+                                         CGAL::parameters::Default_named_parameters> Bare_executor;
   while(samples.size() < count && attempts < 20 * count)
   {
     ++attempts;

@@ -228,91 +228,21 @@ bool leaves_valence_6_without_cleanup(typename boost::graph_traits<PolygonMesh>:
   return !regular(ring[2]) && !regular(ring[3]) && !(regular(ring[1]) && regular(ring[4]));
 }
 
-} // namespace internal
-
-/*!
-\ingroup PkgQzipPrimitive
-
-plans a Q-zip along `sketch`, a simple edge path from the initial singularity `sketch.front()` (an
-interior vertex of valence 3 or 5) to the terminal singularity `sketch.back()` (the same, or a border
-vertex with one quad too many on a straight piece of border or at a corner, whose defect then moves by
-one border edge, or with one quad too few on a straight piece of border, reached along the border, or at
-a concave corner; see the user manual, "Border End Points"; or a feature defect: a vertex of a constrained edge,
-away from the border and not at the end of its curve (a single constrained edge), with one quad too many or too few in the sector between two constrained edges that the
-last edge of the sketch arrives in, its other sectors regular, prepared like a border end in that sector, see
-the user manual, "Feature End Points"), with `initial_operation` as the compass at
-the initial singularity (one of the four motions of the pair). When `sketch.front()` is such a border
-(or feature) vertex and `sketch.back()` an interior one, the plan is that of the reversed sketch: the chain starts at
-the interior singularity (`plan.source == sketch.back()`), and `initial_operation` is the compass there.
-
-The compass is parallel-transported along the path (paper, Sec. 2.5): straight keeps the tag, a left
-(right) turn takes the next counterclockwise (clockwise) tag, and at an irregular vertex the turn is
-decided by the number of quads on the left of the path (after LS or RC) or on its right (after RS or LC):
-one is a turn towards that side, two is straight, three or more a turn away; at a path vertex on the
-border the quads are counted on the side of the mesh (the inner vertices of `sketch` may lie on the
-border: see the user manual, "Paths Along the Border"). The ends are then prepared within the one-rings
-of the two singularities (Sec. 2.6; for a border target, see the user manual, "Border End Points"), folds
-created by the preparation are removed, and the plan is checked against the border (no collapse on the
-side of the border), constrained edges and protected faces. Finally the execution itself (the chain, the
-clean-up of Sec. 2.7 and the check that no singularity was created, exactly as `execute_qzip()` does it)
-is simulated on a copy of the neighbourhood of the path (the faces around the vertices at most three
-edges away from it): a plan whose execution would fail is refused (`EXECUTION_WOULD_FAIL`, with the reason in
-`plan.predicted_failure`), so that a realizable plan is one that `execute_qzip()` carries out.
-The mesh is not modified.
-
-\tparam PolygonMesh a model of `FaceGraph`
-\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-\param pm the polygon mesh
-\param sketch the path, as the sequence of its vertices
-\param initial_operation the compass tag at the initial singularity
-\param np optional named parameters among:
-\cgalNamedParamsBegin
-  \cgalParamNBegin{edge_is_constrained_map}
-    \cgalParamDescription{feature edges: no path vertex may be incident to one, but a feature target and its
-                          continuation along the feature}
-    \cgalParamDefault{no edge is constrained}
-  \cgalParamNEnd
-  \cgalParamNBegin{face_is_constrained_map}
-    \cgalParamDescription{protected faces: no path vertex may be incident to one}
-    \cgalParamDefault{no face is protected}
-  \cgalParamNEnd
-  \cgalParamNBegin{vertex_point_map}
-    \cgalParamDescription{the positions, used for the defect of a border target (see `vertex_defect()`) and
-                          copied for the simulation}
-    \cgalParamDefault{`boost::get(CGAL::vertex_point, pm)`}
-  \cgalParamNEnd
-  \cgalParamNBegin{simulate_chain}
-    \cgalParamDescription{whether a plan that passes the local checks is also simulated on a copy of the
-                          neighbourhood of its path. The simulation costs about two executions of the plan;
-                          without it, `plan_qzip()` costs about a microsecond, and a few plans it calls
-                          realizable are rolled back by `execute_qzip()` (with new descriptors for the elements
-                          the roll-back re-creates).}
-    \cgalParamType{Boolean}
-    \cgalParamDefault{`true`}
-  \cgalParamNEnd
-\cgalNamedParamsEnd
-\returns the plan; `plan.status` says whether it is realizable, or why not (`execute_qzip()` still checks
-         every operation before applying it, and rolls back what it did when one fails).
-*/
-template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+// plan_qzip() with its parameters read: a template on their types, not on the pack, so that packs that
+// differ in other parameters share one planner
+template <typename PolygonMesh, typename VertexPointMap, typename EdgeIsConstrainedMap, typename FaceIsConstrainedMap,
+          typename GeomTraits>
 Surgery_plan<PolygonMesh>
-plan_qzip(const PolygonMesh& pm,
-          const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& sketch,
-          Strip_operation initial_operation,
-          const NamedParameters& np = parameters::default_values())
+plan_qzip_with(const PolygonMesh& pm,
+               const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& sketch,
+               Strip_operation initial_operation, const VertexPointMap& vpm, const EdgeIsConstrainedMap& ecm,
+               const FaceIsConstrainedMap& fcm, const GeomTraits& gt, bool simulate)
 {
   typedef boost::graph_traits<PolygonMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
-  typedef typename GT::edge_descriptor edge_descriptor;
   typedef typename GT::face_descriptor face_descriptor;
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
 
   CGAL_precondition(initial_operation != Strip_operation::NO_OPERATION);
-  const auto ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
-                                    Static_boolean_property_map<edge_descriptor, false>());
-  const auto fcm = choose_parameter(get_parameter(np, Qzip::internal_np::face_is_constrained),
-                                    Static_boolean_property_map<face_descriptor, false>());
 
   Surgery_plan<PolygonMesh> plan;
   plan.sketch = sketch;
@@ -323,7 +253,8 @@ plan_qzip(const PolygonMesh& pm,
   // a border (or feature) source: the chain starts inside, so this is the plan of the reversed sketch, and
   // `initial_operation` is the compass at its start, the interior singularity sketch.back()
   if(on_cut(sketch.front()) && !on_cut(sketch.back()))
-    return plan_qzip(pm, std::vector<vertex_descriptor>(sketch.rbegin(), sketch.rend()), initial_operation, np);
+    return plan_qzip_with(pm, std::vector<vertex_descriptor>(sketch.rbegin(), sketch.rend()), initial_operation, vpm, ecm,
+                          fcm, gt, simulate);
   plan.source = sketch.front();
   plan.target = sketch.back();
   plan.source_valence = int(internal::valence(plan.source, pm));
@@ -335,11 +266,8 @@ plan_qzip(const PolygonMesh& pm,
   // neighbour with one quad (checked after the preparation)
   auto defect_and_expected_faces = [&](vertex_descriptor v)
   {
-    return internal::with_defect_parameters(pm, np, [&](const auto& vpm, const auto& ecm_, const auto& gt)
-    {
-      const internal::Vertex_defect_info info = internal::vertex_defect_info(v, pm, vpm, ecm_, gt);
-      return std::make_pair(info.defect, info.expected_faces);
-    });
+    const internal::Vertex_defect_info info = internal::vertex_defect_info(v, pm, vpm, ecm, gt);
+    return std::make_pair(info.defect, info.expected_faces);
   };
   const bool border_target = internal::is_border_vertex(plan.target, pm);
   // a feature target (interior, on a constrained edge) is judged in the sector its last sketch edge
@@ -359,11 +287,8 @@ plan_qzip(const PolygonMesh& pm,
     const auto ut = halfedge(u, t, pm).first;
     if(get(ecm, edge(ut, pm))) return Plan_status::ENDPOINT_ADJUSTMENT;
     feature_end_sector.clear();
-    const internal::Sector_info sector = internal::with_defect_parameters(pm, np, [&](const auto& vpm, const auto& ecm_, const auto& gt)
-    {
-      return internal::sector_info(ut, pm, vpm, ecm_, gt,
-                                   [&](face_descriptor f) { feature_end_sector.push_back(f); });
-    });
+    const internal::Sector_info sector = internal::sector_info(ut, pm, vpm, ecm, gt,
+                                                               [&](face_descriptor f) { feature_end_sector.push_back(f); });
     defect = std::make_pair(sector.faces - sector.expected_faces, sector.expected_faces);
     if(!sector.bounded || defect_and_expected_faces(t).first != defect.first ||
        !internal::Endpoint_preparation<PolygonMesh>::is_supported_border_end(defect.first, defect.second))
@@ -479,8 +404,7 @@ plan_qzip(const PolygonMesh& pm,
     const auto into_moved_v3 = plan.operations[n - 2] == Strip_operation::RIGHT_COLLAPSE ? next(h, pm) : prev(h, pm);
     const vertex_descriptor moved_v3 = target(into_moved_v3, pm);
     if(on_feature(moved_v3) && !internal::is_border_vertex(moved_v3, pm) &&
-       !internal::with_defect_parameters(pm, np, [&](const auto& vpm, const auto& ecm_, const auto& gt)
-                                         { return internal::loses_a_face_to_regular(into_moved_v3, pm, vpm, ecm_, gt); }))
+       !internal::loses_a_face_to_regular(into_moved_v3, pm, vpm, ecm, gt))
     { plan.status = Plan_status::BORDER_OR_CONSTRAINED; return plan; }
   }
   // a feature target at the end of its curve (one constrained edge): its one sector is bounded on both sides by
@@ -497,13 +421,10 @@ plan_qzip(const PolygonMesh& pm,
   { plan.status = Plan_status::VALENCE_6_LEFT; return plan; }
   if(plan.number_of_collapses() + plan.number_of_splits() == 0) { plan.status = Plan_status::NOTHING_TO_DO; return plan; }
   plan.status = Plan_status::REALIZABLE;
-  if(choose_parameter(get_parameter(np, Qzip::internal_np::chain_simulation), true))
+  if(simulate)
   {
-    const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                      get_const_property_map(CGAL::vertex_point, pm));
     // the copy's buffers are kept from plan to plan
-    static thread_local internal::Chain_simulation<PolygonMesh, std::decay_t<decltype(vpm)>, std::decay_t<decltype(ecm)>,
-                                                   std::decay_t<decltype(fcm)> > simulation;
+    static thread_local Chain_simulation<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap> simulation;
     const auto s = simulation.run(pm, plan, vpm, ecm, fcm);
     if(s.failure != Execution_failure::NONE)
     {
@@ -513,6 +434,91 @@ plan_qzip(const PolygonMesh& pm,
     }
   }
   return plan;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgQzipPrimitive
+
+plans a Q-zip along `sketch`, a simple edge path from the initial singularity `sketch.front()` (an
+interior vertex of valence 3 or 5) to the terminal singularity `sketch.back()` (the same, or a border
+vertex with one quad too many on a straight piece of border or at a corner, whose defect then moves by
+one border edge, or with one quad too few on a straight piece of border, reached along the border, or at
+a concave corner; see the user manual, "Border End Points"; or a feature defect: a vertex of a constrained edge,
+away from the border and not at the end of its curve (a single constrained edge), with one quad too many or too few in the sector between two constrained edges that the
+last edge of the sketch arrives in, its other sectors regular, prepared like a border end in that sector, see
+the user manual, "Feature End Points"), with `initial_operation` as the compass at
+the initial singularity (one of the four motions of the pair). When `sketch.front()` is such a border
+(or feature) vertex and `sketch.back()` an interior one, the plan is that of the reversed sketch: the chain starts at
+the interior singularity (`plan.source == sketch.back()`), and `initial_operation` is the compass there.
+
+The compass is parallel-transported along the path (paper, Sec. 2.5): straight keeps the tag, a left
+(right) turn takes the next counterclockwise (clockwise) tag, and at an irregular vertex the turn is
+decided by the number of quads on the left of the path (after LS or RC) or on its right (after RS or LC):
+one is a turn towards that side, two is straight, three or more a turn away; at a path vertex on the
+border the quads are counted on the side of the mesh (the inner vertices of `sketch` may lie on the
+border: see the user manual, "Paths Along the Border"). The ends are then prepared within the one-rings
+of the two singularities (Sec. 2.6; for a border target, see the user manual, "Border End Points"), folds
+created by the preparation are removed, and the plan is checked against the border (no collapse on the
+side of the border), constrained edges and protected faces. Finally the execution itself (the chain, the
+clean-up of Sec. 2.7 and the check that no singularity was created, exactly as `execute_qzip()` does it)
+is simulated on a copy of the neighbourhood of the path (the faces around the vertices at most three
+edges away from it): a plan whose execution would fail is refused (`EXECUTION_WOULD_FAIL`, with the reason in
+`plan.predicted_failure`), so that a realizable plan is one that `execute_qzip()` carries out.
+The mesh is not modified.
+
+\tparam PolygonMesh a model of `FaceGraph`
+\tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+\param pm the polygon mesh
+\param sketch the path, as the sequence of its vertices
+\param initial_operation the compass tag at the initial singularity
+\param np optional named parameters among:
+\cgalNamedParamsBegin
+  \cgalParamNBegin{edge_is_constrained_map}
+    \cgalParamDescription{feature edges: no path vertex may be incident to one, but a feature target and its
+                          continuation along the feature}
+    \cgalParamDefault{no edge is constrained}
+  \cgalParamNEnd
+  \cgalParamNBegin{face_is_constrained_map}
+    \cgalParamDescription{protected faces: no path vertex may be incident to one}
+    \cgalParamDefault{no face is protected}
+  \cgalParamNEnd
+  \cgalParamNBegin{vertex_point_map}
+    \cgalParamDescription{the positions, used for the defect of a border target (see `vertex_defect()`) and
+                          copied for the simulation}
+    \cgalParamDefault{`boost::get(CGAL::vertex_point, pm)`}
+  \cgalParamNEnd
+  \cgalParamNBegin{simulate_chain}
+    \cgalParamDescription{whether a plan that passes the local checks is also simulated on a copy of the
+                          neighbourhood of its path. The simulation costs about two executions of the plan;
+                          without it, `plan_qzip()` costs about a microsecond, and a few plans it calls
+                          realizable are rolled back by `execute_qzip()` (with new descriptors for the elements
+                          the roll-back re-creates).}
+    \cgalParamType{Boolean}
+    \cgalParamDefault{`true`}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+\returns the plan; `plan.status` says whether it is realizable, or why not (`execute_qzip()` still checks
+         every operation before applying it, and rolls back what it did when one fails).
+*/
+template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
+Surgery_plan<PolygonMesh>
+plan_qzip(const PolygonMesh& pm,
+          const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& sketch,
+          Strip_operation initial_operation,
+          const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
+  const auto fcm = choose_parameter(get_parameter(np, Qzip::internal_np::face_is_constrained),
+                                    Static_boolean_property_map<face_descriptor, false>());
+  const bool simulate = choose_parameter(get_parameter(np, Qzip::internal_np::chain_simulation), true);
+  return internal::with_defect_parameters(pm, np, [&](const auto& vpm, const auto& ecm, const auto& gt)
+  {
+    return internal::plan_qzip_with(pm, sketch, initial_operation, vpm, ecm, fcm, gt, simulate);
+  });
 }
 
 /*!
