@@ -175,10 +175,6 @@ class Chain_simulation
     }
   };
 
-  typedef decltype(local_executor_parameters(std::declval<Local_point_map>(), std::declval<typename Local_ecm::type>(),
-                                             std::declval<typename Local_fcm::type>(), std::declval<Cut_watcher&>()))
-    Executor_parameters;
-
   // the executor, its operation log and its watcher, kept from plan to plan for their buffers
   Operation_log<Local_mesh, Local_point_map> log;
   Cut_watcher watcher;
