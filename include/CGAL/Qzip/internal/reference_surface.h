@@ -31,9 +31,10 @@ namespace internal {
 // does (the closest point of the triangles), but that first tries a uniform grid of cells (hashed into
 // buckets) around the triangle of a previous answer (the hint): when the sphere through that triangle's
 // closest point spans a few cells and a single point is closest among the triangles of their buckets, it is
-// the tree's answer. Other queries (no hint, a large sphere, two closest points at the same distance, where
-// the tree's answer depends on its order) go to the tree, from the hint triangle's closest point if there
-// is a hint.
+// the tree's answer. Other queries (a large sphere, two closest points at the same distance, where the
+// tree's answer depends on its order) go to the tree, from the hint triangle's closest point. A query without
+// a hint takes a triangle of the grid near it as one, so that the tree never needs the k-d tree with which
+// it would find hints itself (built at its first query without one: seconds on a million quads).
 template <typename GeomTraits>
 class Reference_surface
 {
@@ -102,15 +103,22 @@ class Reference_surface
           f(bucket(i, j, k));
   }
 
-  // the tree's answer, searched from the closest point to p of the hint triangle if there is a hint (a point
-  // of the surface, as the tree requires of a hint); the hint becomes the triangle of the answer
+  // the tree's answer, searched from the closest point to p of the hint triangle (a point of the surface, as
+  // the tree requires of a hint); the hint becomes the triangle of the answer
   Point fallback(const Point& p, std::size_t& hint) const
   {
-    const Triangle_iterator t = triangles.begin() + std::ptrdiff_t(hint == 0 ? 0 : hint - 1);
-    const auto r = hint == 0 ? tree->closest_point_and_primitive(p)
-                             : tree->closest_point_and_primitive(p, std::make_pair(GeomTraits().construct_projected_point_3_object()(*t, p), t));
+    const Triangle_iterator t = triangles.begin() + std::ptrdiff_t(hint - 1);
+    const auto r = tree->closest_point_and_primitive(p, std::make_pair(GeomTraits().construct_projected_point_3_object()(*t, p), t));
     hint = std::size_t(r.second - triangles.begin()) + 1;
     return r.first;
+  }
+
+  // a hint for a query without one: a triangle of the bucket of p's cell (the first triangle if it has none)
+  std::size_t triangle_near(const Point& p) const
+  {
+    const std::size_t b = bucket(cell_index(CGAL::to_double(p.x()), 0), cell_index(CGAL::to_double(p.y()), 1),
+                                 cell_index(CGAL::to_double(p.z()), 2));
+    return bucket_begin[b] < bucket_begin[b + 1] ? std::size_t(bucket_entries[bucket_begin[b]].triangle) + 1 : 1;
   }
 
 public:
@@ -129,6 +137,7 @@ public:
   {
     if(triangles.empty()) return;
     tree.reset(new Tree(triangles.begin(), triangles.end()));
+    tree->do_not_accelerate_distance_queries(); // every query has a hint (see triangle_near())
     tree->build();
     std::vector<Bbox_3> boxes;
     boxes.reserve(triangles.size());
@@ -171,7 +180,7 @@ public:
   Point closest_point(const Point& p, std::size_t& hint) const
   {
     if(hint > triangles.size()) hint = 0;
-    if(hint == 0) return fallback(p, hint);
+    if(hint == 0) hint = triangle_near(p);
     std::size_t best_triangle = hint - 1;
     Point best = GeomTraits().construct_projected_point_3_object()(triangles[best_triangle], p);
     // every triangle at most as far as `best` has its bounding box within r of p (r slightly enlarged
