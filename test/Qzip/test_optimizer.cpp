@@ -552,6 +552,7 @@ void test_replanned_after_undos(const std::string& data_dir)
     Q::internal::Optimizer_settings settings;
     settings.end_game = false;
     settings.replan_after_undos = replan == 1;
+    settings.untangling_sweeps = 0; // undone at once: many more undos to replan after
     const Q::Default_scoring scoring;
     const Q::Batch_count_stop_predicate stop(8);
     Visitor vis;
@@ -745,14 +746,17 @@ void make_genus3_plate(Surface_mesh& m)
 // the genus-3 plate where the batches and the plain end game stop above the optimum (a v3-v5 pair or more
 // left), for the first such seed from 18 on, which it returns. Since the isotropy and sizing terms are divided by
 // the square root of the number of operations, the batches reach the optimum on seeds 0 to 17 (before, on 0 to
-// 25): the search starts at 18 so as not to optimize the plate 18 more times on every run.
+// 25): the search starts at 18 so as not to optimize the plate 18 more times on every run. Failed surgeries
+// are undone at once, without untangling: with it (the default since session 21) the batches reach the
+// optimum on every seed from 18 to 99.
 unsigned int make_plate_where_batches_stop(Surface_mesh& m)
 {
   unsigned int seed = 18;
   for(; seed < 100; ++seed)
   {
     make_genus3_plate(m);
-    Q::optimize_singularities(m, Q::parameters::do_look_ahead(false, CGAL::parameters::random_seed(seed)));
+    Q::optimize_singularities(m, Q::parameters::do_look_ahead(false, Q::parameters::number_of_untangling_sweeps(0,
+                                 CGAL::parameters::random_seed(seed))));
     if(singularities(m) > 16) break;
   }
   assert(seed < 100);
@@ -1109,19 +1113,24 @@ void test_reference_surface()
 // 0.11, on trimesh_target one at 0.009, that the pairing had moved.)
 void test_vertices_on_input_surface(const std::string& data_dir)
 {
+  // with the default untangling of failed surgeries, and without it (more surgeries undone: their positions
+  // restored, on the surface too)
   for(const char* name : { "quadriflow_gargoyle.obj", "noisy_sphere_triquad.obj", "trimesh_target.obj" })
+  for(int sweeps : { 20, 0 })
   {
     Surface_mesh m;
     if(!read_mesh(data_dir + name, m)) { std::cerr << "cannot read " << name << std::endl; assert(false); }
     Q::preprocess_valences(m);
     const Input_surface<K> input(m);
-    const auto s = Q::optimize_singularities(m);
+    const auto s = Q::optimize_singularities(m, Q::parameters::number_of_untangling_sweeps(sweeps));
     const double d = input.largest_distance(m);
-    std::cout << name << ": " << s.initial_number_of_singularities << " -> " << s.number_of_singularities
-              << " singularities, " << s.number_of_triangle_collisions << " triangle collisions, vertices at most "
+    std::cout << name << " (untangling sweeps " << sweeps << "): " << s.initial_number_of_singularities << " -> "
+              << s.number_of_singularities << " singularities, " << s.number_of_undone_surgeries << " undone, "
+              << s.number_of_triangle_collisions << " triangle collisions, vertices at most "
               << d << " mean edge lengths from the input surface" << std::endl;
     assert(CGAL::is_valid_polygon_mesh(m) && Q::compute_mesh_report(m).number_of_inverted_quads == 0);
-    assert(s.number_of_singularities < s.initial_number_of_singularities && s.number_of_undone_surgeries > 0);
+    assert(s.number_of_singularities < s.initial_number_of_singularities);
+    assert(sweeps != 0 || s.number_of_undone_surgeries > 0);
     assert((s.initial_number_of_triangles == 0) == (std::string(name) == "quadriflow_gargoyle.obj"));
     assert(s.initial_number_of_triangles == 0 || s.number_of_triangle_collisions > 0);
     assert(d < 1e-9);

@@ -74,8 +74,10 @@ fine subdivisions), skipping any surgery whose path comes within
 three edges of a path already operated on in this batch (a singularity whose best candidate is skipped
 tries its next ones instead), unless all those surgeries were undone: then the mesh there is as it was, and
 the candidate is found again by its positions and planned again. After each surgery its scar is smoothed (see `smooth_quad_mesh()`); if the
-surgery leaves more inverted quads (scaled Jacobian `<= 0`) near its path than there were (or the number of
-faces outside `face_count_tolerance`), the smoothing
+surgery leaves more inverted quads (scaled Jacobian `<= 0`) near its path than there were, or a quad worse
+than both the worst one before and 0.1, the scar is untangled (each vertex with a quad below 0.1 moves to the
+best of a few positions on the surface, up to 20 sweeps) and checked again; if it still fails (or the number
+of faces is outside `face_count_tolerance`), the smoothing
 and the surgery are undone exactly, and the same surgery (same positions of its ends, same motion) is not
 a candidate again until a batch lowers the number of singularities. A kept Q-zip moves its pair by about
 one edge; while each end of the pair is still more than three edges from the singularity of the opposite
@@ -166,6 +168,12 @@ Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valen
     \cgalParamDescription{the number of smoothing sweeps after each surgery and after each batch}
     \cgalParamDefault{5}
   \cgalParamNEnd
+  \cgalParamNBegin{number_of_untangling_sweeps}
+    \cgalParamDescription{(Qzip) a surgery whose smoothed scar has more inverted quads than before, or a quad worse
+                          than both the worst one before and 0.1, is untangled with at most this many sweeps and
+                          checked again before it is undone (0: undone at once; ignored without smoothing)}
+    \cgalParamDefault{20}
+  \cgalParamNEnd
   \cgalParamNBegin{face_count_tolerance}
     \cgalParamDescription{(Qzip) a candidate that would take the number of faces farther than this fraction
                           of the number of faces of `pm` (as given, before the collisions of its triangles)
@@ -236,6 +244,7 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
   settings.end_game = choose_parameter(get_parameter(np, Qzip::internal_np::end_game), true);
   settings.look_ahead = choose_parameter(get_parameter(np, Qzip::internal_np::look_ahead), true);
   settings.smoothing_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 5);
+  settings.untangling_sweeps = choose_parameter(get_parameter(np, Qzip::internal_np::untangling_sweeps), 20);
   settings.face_count_tolerance = choose_parameter(get_parameter(np, Qzip::internal_np::face_count_tolerance), 0.1);
   settings.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
 
