@@ -76,7 +76,7 @@ tries its next ones instead), unless all those surgeries were undone: then the m
 the candidate is found again by its positions and planned again. After each surgery its scar is smoothed (see `smooth_quad_mesh()`); if the
 surgery leaves more inverted quads (scaled Jacobian `<= 0`) near its path than there were, or a quad worse
 than both the worst one before and 0.1, the scar is untangled (each vertex with a quad below 0.1 moves to the
-best of a few positions on the surface, up to 20 sweeps) and checked again; if it still fails (or the number
+best of a few positions on the surface, at most `number_of_untangling_sweeps` sweeps) and checked again; if it still fails (or the number
 of faces is outside `face_count_tolerance`), the smoothing
 and the surgery are undone exactly, and the same surgery (same positions of its ends, same motion) is not
 a candidate again until a batch lowers the number of singularities. A kept Q-zip moves its pair by about
