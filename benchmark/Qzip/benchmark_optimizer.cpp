@@ -5,7 +5,7 @@
 // usage: benchmark_optimizer [--corpus DIR] [--runs R] [--max-level L] [--skip-corpus] [--skip-large]
 //                            [--skip-genus3] [--measure] [--mesh FILE]... [--trace]
 //                            [--max-batches N] [--patience N] [--count-stop] [--seed S] [--min-level L]
-//                            [--fingerprint] [--seeds N] [--time-limit S]
+//                            [--fingerprint] [--seeds N] [--first-seed S] [--time-limit S]
 //   --runs R       runs per mesh below 100k quads, the median time is reported (default 3)
 //   --max-level L  Catmull-Clark levels of the scaling series (default 4: ~1M quads)
 //   --min-level L  run the scaling series from this level on (default 0; the lower levels are still built)
@@ -20,7 +20,9 @@
 //   --seed S       the random seed of the runs (default 0)
 //   --time-limit S the maximum_running_time of the runs, in seconds (default: none)
 //   --seeds N      one run for each of the seeds 0 to N-1 of every selected mesh (--mesh, else the corpus),
-//                  and a table of the spread of the results (final count, faces, time to the plateau)
+//                  and a table of the spread of the results (final count, its mean and standard error, faces,
+//                  time to the plateau, time until the median final count over the seeds was first reached)
+//   --first-seed S with --seeds N: the seeds S to S+N-1 (to split a spread over several processes)
 // Meshes read from files are read again for every run (not copied), so a run optimizes the mesh the example
 // optimizes; the Catmull-Clark and genus-3 meshes, built in memory, are copied.
 // The summary line of each mesh on stderr also gives the median CPU time of the process (std::clock())
@@ -44,6 +46,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <functional>
@@ -118,10 +121,14 @@ struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
   // most that (negative: not yet)
   double target = -1;
   double target_since = -1;
+  // first_at_most[n]: the CPU seconds at which the count first was at most n (negative: not yet)
+  std::vector<double> first_at_most;
+  std::size_t lowest = 0; // the lowest count so far
   double cpu_seconds() const { return double(std::clock() - start) / CLOCKS_PER_SEC; }
   void record_target(std::size_t n)
   {
     if(target >= 0 && target_since < 0 && double(n) <= target) target_since = cpu_seconds();
+    for(; lowest > n; --lowest) first_at_most[lowest - 1] = cpu_seconds();
   }
   void record(const Q::Optimizer_statistics& s)
   {
@@ -134,6 +141,9 @@ struct Trace_visitor : public Q::Default_optimizer_visitor<Mesh>
   {
     count = s.number_of_singularities;
     count_since = cpu_seconds();
+    first_at_most.assign(count + 1, -1.);
+    first_at_most[count] = cpu_seconds();
+    lowest = count;
     record_target(count);
   }
   void on_batch_finished(const Q::Optimizer_statistics& s)
@@ -159,6 +169,7 @@ struct Row
   // CPU seconds until the number of singularities first was at most the target (see target_count()): the
   // median over the runs, negative if a run never reached it or the mesh has no target
   double target_seconds = -1;
+  std::vector<double> first_at_most; // of the last run, see Trace_visitor
   std::array<double, 3> off_surface = {{ 0, 0, 0 }}; // see off_surface()
   std::string exact;
   std::size_t fingerprint = 0;
@@ -253,6 +264,7 @@ static Row run(const std::string& name, const Input& input, int runs, bool measu
     cpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
     plateau.push_back(tracer.count_since);
     to_target.push_back(tracer.target_since);
+    row.first_at_most = tracer.first_at_most;
     if(i + 1 == runs)
     {
       row.after = Q::compute_mesh_report(m);
@@ -319,19 +331,20 @@ static void print_row(const Row& r, bool measure)
 // and with it its time, depends on the seed)
 static void print_spread_header()
 {
-  std::cout << "| mesh | singularities before | after: min / median / max | faces Δ%: min / max | inverted after: max | "
-               "off surface (edges): max / largest mean | to plateau (CPU s): min / median / max | CPU s: min / median / max | "
-               "to the bound (CPU s): min / median / max |\n"
-            << "|---|---|---|---|---|---|---|---|---|\n";
+  std::cout << "| mesh | singularities before | after: min / median / max | after: mean ± s.e. | faces Δ%: min / max | "
+               "inverted after: max | off surface (edges): max / largest mean | to plateau (CPU s): min / median / max | "
+               "CPU s: min / median / max | to the median count (CPU s): median | to the bound (CPU s): min / median / max |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|\n";
 }
 
-static void print_spread(const std::string& name, const Input& input, unsigned int seeds)
+static void print_spread(const std::string& name, const Input& input, unsigned int first_seed, unsigned int seeds)
 {
   std::vector<double> after, faces_change, plateau, cpu, to_target;
+  std::vector<std::vector<double> > first_at_most;
   std::size_t before = 0, inverted = 0;
   bool has_target = false;
   double off_max = 0, off_mean = 0;
-  for(unsigned int s = 0; s < seeds; ++s)
+  for(unsigned int s = first_seed; s < first_seed + seeds; ++s)
   {
     seed = s;
     const Row r = run(name + " seed " + std::to_string(s), input, 1, false);
@@ -344,6 +357,7 @@ static void print_spread(const std::string& name, const Input& input, unsigned i
     cpu.push_back(r.cpu_seconds);
     has_target = r.before.has_singularity_lower_bound;
     if(r.target_seconds >= 0) to_target.push_back(r.target_seconds);
+    first_at_most.push_back(r.first_at_most);
     off_max = (std::max)(off_max, r.off_surface[0]);
     off_mean = (std::max)(off_mean, r.off_surface[1]);
   }
@@ -352,11 +366,27 @@ static void print_spread(const std::string& name, const Input& input, unsigned i
     std::sort(x.begin(), x.end());
     return fmt(x.front(), precision) + " / " + fmt(x[x.size() / 2], precision) + " / " + fmt(x.back(), precision);
   };
+  // the mean final count and its standard error; the CPU time until each run first reached the median final
+  // count (a run that never did counts as infinitely slow: at least half of them did)
+  double mean = 0, variance = 0;
+  for(double a : after) mean += a;
+  mean /= double(after.size());
+  for(double a : after) variance += (a - mean) * (a - mean);
+  const double standard_error = after.size() > 1 ? std::sqrt(variance / double(after.size() - 1) / double(after.size())) : 0.;
+  std::vector<double> sorted_after = after;
+  std::sort(sorted_after.begin(), sorted_after.end());
+  const std::size_t median_count = std::size_t(sorted_after[sorted_after.size() / 2]);
+  std::vector<double> to_median;
+  for(const std::vector<double>& f : first_at_most)
+    to_median.push_back(median_count < f.size() && f[median_count] >= 0 ? f[median_count]
+                                                                        : std::numeric_limits<double>::infinity());
+  std::sort(to_median.begin(), to_median.end());
   std::sort(faces_change.begin(), faces_change.end());
-  std::cout << "| " << name << " | " << before << " | " << spread(after, 0) << " | " << fmt(faces_change.front(), 1)
+  std::cout << "| " << name << " | " << before << " | " << spread(after, 0) << " | " << fmt(mean, 2) << " ± "
+            << fmt(standard_error, 2) << " | " << fmt(faces_change.front(), 1)
             << " / " << fmt(faces_change.back(), 1) << " | " << inverted << " | " << fmt(off_max, 2) << " / "
             << fmt(off_mean, 4) << " | " << spread(plateau, 2) << " | "
-            << spread(cpu, 2) << " | ";
+            << spread(cpu, 2) << " | " << fmt(to_median[to_median.size() / 2], 2) << " (≤ " << median_count << ") | ";
   if(!has_target) std::cout << "n/a";
   else if(to_target.size() == seeds) std::cout << spread(to_target, 2);
   else std::cout << "reached on " << to_target.size() << " of " << seeds << " seeds";
@@ -367,7 +397,7 @@ int main(int argc, char** argv)
 {
   std::string corpus = QZIP_SHARED_DATA_DIR;
   int runs = 3, max_level = 4, min_level = 0;
-  unsigned int seeds = 0;
+  unsigned int seeds = 0, first_seed = 0;
   bool skip_corpus = false, skip_large = false, skip_genus3 = false, measure = false;
   std::vector<std::string> meshes;
   for(int i = 1; i < argc; ++i)
@@ -389,6 +419,7 @@ int main(int argc, char** argv)
     else if(a == "--count-stop") count_stop = true;
     else if(a == "--seed" && i + 1 < argc) seed = unsigned(std::atoi(argv[++i]));
     else if(a == "--seeds" && i + 1 < argc) seeds = unsigned(std::max(1, std::atoi(argv[++i])));
+    else if(a == "--first-seed" && i + 1 < argc) first_seed = unsigned(std::max(0, std::atoi(argv[++i])));
     else if(a == "--mesh" && i + 1 < argc) meshes.push_back(argv[++i]);
     else { std::cerr << "error: unknown argument '" << a << "'" << std::endl; return EXIT_FAILURE; }
   }
@@ -398,13 +429,14 @@ int main(int argc, char** argv)
     if(meshes.empty() && file_exists(corpus + "/SOURCES.md"))
       for(const std::string& f : shared_corpus_files()) meshes.push_back(corpus + "/" + f);
     if(meshes.empty()) { std::cout << "corpus not found at " << corpus << " and no --mesh: nothing to run\n"; return EXIT_SUCCESS; }
-    std::cout << "\n### Spread over seeds 0-" << seeds - 1 << " (default parameters, one run per seed)\n\n";
+    std::cout << "\n### Spread over seeds " << first_seed << "-" << first_seed + seeds - 1
+              << " (default parameters, one run per seed)\n\n";
     print_spread_header();
     for(const std::string& f : meshes)
     {
       Mesh m;
       if(!read_mesh(f, m)) { std::cout << "| " << f << " | unreadable |\n"; continue; }
-      print_spread(f.substr(f.find_last_of('/') + 1), from_file(f), seeds);
+      print_spread(f.substr(f.find_last_of('/') + 1), from_file(f), first_seed, seeds);
     }
     return EXIT_SUCCESS;
   }
