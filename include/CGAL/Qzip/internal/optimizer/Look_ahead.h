@@ -71,6 +71,10 @@ public:
     std::size_t partners = 5;  // singularities beyond `b` tried as partner
     int partner_distance = 16; // at most this many edges beyond `b`
     int smoothing_iterations = 5;
+    // a chain whose smoothed scar fails the guard is untangled with at most this many sweeps before it is
+    // judged again (see passes_quality_guard()); independent of the batches' `number_of_untangling_sweeps`,
+    // so that a run without untangling in its batches still untangles its chains
+    int untangling_sweeps = 20;
     double quality_floor = 0.1;
     bool smooth = true;
   };
@@ -505,7 +509,7 @@ private:
       smoother.snap_to_surface(changed);
       smoother.smooth(scar, 3 * settings.smoothing_iterations);
     }
-    if(passes() || (settings.smooth && smoother.untangle(scar, untangling_sweeps, settings.quality_floor) > 0 && passes()))
+    if(passes() || (settings.smooth && smoother.untangle(scar, settings.untangling_sweeps, settings.quality_floor) > 0 && passes()))
     {
       chain.scar = std::move(scar);
       chain.face_change = state.face_change;
@@ -656,7 +660,6 @@ private:
   std::unordered_set<std::size_t> refused;
   // the quads around near_chain before the search changed them (see near_chain_grows())
   std::vector<Quad_before> quads_before;
-  static constexpr int untangling_sweeps = 20;
 };
 
 } // namespace internal
