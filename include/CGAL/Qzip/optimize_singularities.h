@@ -67,7 +67,7 @@ or 5 not on a feature nor a protected face). For each, the three closest v3-like
 v5-like singularities (graph distance through passable vertices; boundary and feature defects met on the
 way are also tried) are joined by a shortest surgery path, and the four motions of each pair are planned
 (24 candidate surgeries). Every realizable plan is scored from the plan alone (no execution) by the
-scoring functor; each singularity keeps its best improving candidate (and its next three, in order). The
+scoring functor; each singularity keeps its best improving candidate (and its next twelve, in order). The
 candidates are sorted and the best half is executed serially (all of them, best first, when the
 singularities are sparse: `Optimizer_statistics::pairing_distance` at least 25 times their number, as on
 fine subdivisions), skipping any surgery whose path comes within
