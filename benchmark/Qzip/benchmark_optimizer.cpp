@@ -264,9 +264,9 @@ static Row run(const std::string& name, const Input& input, int runs, bool measu
     cpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
     plateau.push_back(tracer.count_since);
     to_target.push_back(tracer.target_since);
-    row.first_at_most = tracer.first_at_most;
     if(i + 1 == runs)
     {
+      row.first_at_most = tracer.first_at_most;
       row.after = Q::compute_mesh_report(m);
       row.fingerprint = position_fingerprint(m);
       row.off_surface = off_surface(pre, m);

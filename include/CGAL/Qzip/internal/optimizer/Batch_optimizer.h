@@ -63,7 +63,7 @@ struct Optimizer_settings
   std::size_t max_end_game_rounds = 10;
   // a source whose best candidate is skipped (its region already operated on in the batch, or the face
   // budget spent) tries its next best ones, up to this many. Until session 24: 3. With 12, the rocker arm
-  // ends 1 to 1.6 singularities lower on average (seeds 0-63) and reaches 10 singularities sooner, and the
+  // ends 0.9 to 1.6 singularities lower on average (seeds 0-63) and reaches 10 singularities sooner, and the
   // corpus 6 to 13 lower in sum (seeds 0-2), in about the same time (RESULTS.md, session 24)
   std::size_t alternatives = 12;
   // a chosen plan whose path meets only regions of surgeries of the batch that were undone is planned
