@@ -4,7 +4,8 @@
 // sides are not supported: such an input is refused with one "error:" line.
 //
 // usage: optimize_singularities [IN [OUT]] [--batches N] [--time-limit SECONDS] [--seed S]
-//                               [--feature-angle DEG] [--protect FACES.txt] [--no-smooth] [--json REPORT]
+//                               [--feature-angle DEG] [--protect FACES.txt] [--no-smooth] [--weights E,I,S,X,P]
+//                               [--json REPORT]
 //
 // Reads IN (default: the bundled Spot, CGAL::data_file_path("meshes/spot_quadrangulated.obj")),
 // removes interior valence-2 vertices and splits valence-6+ ones (preprocess_valences()), optimizes,
@@ -17,6 +18,8 @@
 //   --feature-angle DEG edges whose dihedral angle exceeds DEG degrees are features: never crossed
 //   --protect FILE      0-based indices of faces of IN, one per line: no edit reaches them
 //   --no-smooth         no smoothing (surgeries that would invert a quad are undone)
+//   --weights E,I,S,X,P the weights of Default_scoring's electric, isotropy, sizing, separatrix and pairing
+//                       terms (default 1,0.02,0.02,0.02,0.3; their effect: benchmark/Qzip/RESULTS.md, session 25)
 //   --json REPORT       also write the before/after reports as JSON to REPORT
 
 #include "qzip_example_io.h"
@@ -50,7 +53,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 static const char* usage =
   "usage: optimize_singularities [IN [OUT]] [--batches N] [--time-limit SECONDS] [--seed S] "
-  "[--feature-angle DEG] [--protect FACES.txt] [--no-smooth] [--json REPORT]";
+  "[--feature-angle DEG] [--protect FACES.txt] [--no-smooth] [--weights E,I,S,X,P] [--json REPORT]";
 
 // prints progress on stderr
 struct Progress_visitor : public Q::Default_optimizer_visitor<Mesh>
@@ -77,6 +80,24 @@ static bool parse_number(const std::string& s, double& out)
   return bool(is >> out) && is.eof();
 }
 
+// reads "E,I,S,X,P" (five finite non-negative numbers) into the weights of `scoring`
+static bool parse_weights(const std::string& s, Q::Default_scoring& scoring)
+{
+  double* const weights[] = { &scoring.electric_weight, &scoring.isotropy_weight, &scoring.sizing_weight,
+                              &scoring.separatrix_weight, &scoring.pairing_weight };
+  double values[5];
+  std::size_t begin = 0;
+  for(int i = 0; i < 5; ++i)
+  {
+    const std::size_t end = i < 4 ? s.find(',', begin) : s.size();
+    if(end == std::string::npos) return false;
+    if(!parse_number(s.substr(begin, end - begin), values[i]) || !(values[i] >= 0 && values[i] < 1e9)) return false;
+    begin = end + 1;
+  }
+  for(int i = 0; i < 5; ++i) *weights[i] = values[i];
+  return true;
+}
+
 static void summary(std::ostream& os, const char* title, const Q::Mesh_report& r)
 {
   os << title << ": " << r.number_of_quads << " quads, " << r.number_of_triangles << " triangles ("
@@ -95,7 +116,8 @@ static void summary(std::ostream& os, const char* title, const Q::Mesh_report& r
 int main(int argc, char** argv)
 {
   const std::set<std::string> flags = { "--no-smooth", "--help", "-h" };
-  const std::set<std::string> with_value = { "--batches", "--time-limit", "--seed", "--feature-angle", "--protect", "--json" };
+  const std::set<std::string> with_value = { "--batches", "--time-limit", "--seed", "--feature-angle", "--protect",
+                                              "--weights", "--json" };
   if(qzip_example::has_flag(argc, argv, "--help") || qzip_example::has_flag(argc, argv, "-h"))
   {
     std::cout << usage << std::endl;
@@ -137,6 +159,10 @@ int main(int argc, char** argv)
   const std::string angle_s = qzip_example::option_value(argc, argv, "--feature-angle");
   if(!angle_s.empty() && (!parse_number(angle_s, feature_angle) || !(feature_angle >= 0 && feature_angle <= 180)))
   { std::cerr << "error: --feature-angle expects an angle in degrees in [0, 180], got '" << angle_s << "'" << std::endl; return EXIT_FAILURE; }
+  Q::Default_scoring scoring;
+  const std::string weights_s = qzip_example::option_value(argc, argv, "--weights");
+  if(!weights_s.empty() && !parse_weights(weights_s, scoring))
+  { std::cerr << "error: --weights expects five non-negative numbers E,I,S,X,P, got '" << weights_s << "'" << std::endl; return EXIT_FAILURE; }
 
   Mesh mesh;
   std::string error;
@@ -212,15 +238,18 @@ int main(int argc, char** argv)
   }
   const Q::Preprocess_result pre = Q::preprocess_valences(mesh, CGAL::parameters::edge_is_constrained_map(efrozen));
   mesh.remove_property_map(efrozen);
+  std::cout << "scoring weights: electric " << scoring.electric_weight << ", isotropy " << scoring.isotropy_weight
+            << ", sizing " << scoring.sizing_weight << ", separatrix " << scoring.separatrix_weight << ", pairing "
+            << scoring.pairing_weight << "\n";
   std::cerr << "preprocessing: " << pre.removed_valence_2 << " valence-2 vertices removed, " << pre.vertex_splits
             << " vertex splits" << std::endl;
 
   Progress_visitor progress;
   Q::Optimizer_result stats;
   const bool smooth = !qzip_example::has_flag(argc, argv, "--no-smooth");
-  const auto common = Q::parameters::face_is_constrained_map(fprot,
+  const auto common = Q::parameters::scoring_functor(scoring, Q::parameters::face_is_constrained_map(fprot,
                         CGAL::parameters::edge_is_constrained_map(efeat).random_seed(unsigned(seed)).visitor(std::ref(progress))
-                          .maximum_running_time(time_limit));
+                          .maximum_running_time(time_limit)));
   if(batches > 0)
     stats = Q::optimize_singularities(mesh, Q::parameters::combine(common, Q::parameters::do_smooth(smooth),
               Q::parameters::stop_predicate(Q::stop_when_either(Q::Batch_count_stop_predicate(batches),

@@ -40,9 +40,13 @@ one side of the path, which widens the remaining quads across the path; a chain 
 strip, which narrows them. For each operation, with `along` the length of the path edge and `across`
 the length of the quad's sides that leave the path, the term adds `log(across / along)` for a collapse
 (negative, i.e. good, when the quads are squeezed across the path) and `-log(across / along)` for a
-split (good when they are stretched across it); the sum is divided by the square root of the number of
-operations, so that a long path does not win by the number of its terms alone (their sum grows with the
-length of the path, and so do the chance fluctuations of a sum, as its square root). Only the plan is used.
+split (good when they are stretched across it), and returns the mean over the operations: the change of
+shape per quad the plan acts on, whatever the length of the path. (A sum would let a long path win by the
+number of its terms alone; until session 25 the sum was divided by the square root of the number of
+operations, which left the chance fluctuations of a sum of many small terms as large on a long path as on a
+short one: far apart, where the electric term changes little from one candidate to the next, they decided
+which Q-zips were chosen, and singularities tens of edges apart met late, see benchmark/Qzip/RESULTS.md.)
+Only the plan is used.
 */
 struct Isotropy_term
 {
@@ -58,7 +62,7 @@ struct Isotropy_term
       s += is_collapse(op) ? r : -r;
       ++n;
     });
-    return n > 0 ? s / std::sqrt(double(n)) : s;
+    return n > 0 ? s / double(n) : s;
   }
 };
 

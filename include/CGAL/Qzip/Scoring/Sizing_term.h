@@ -24,8 +24,8 @@ namespace Qzip {
 The uniform sizing control of the paper's Sec. 4.1: no collapse where quads are already large, no
 split where they are already small. For each operation of the plan, with `a` the area of the quad it
 acts on (see `Isotropy_term`) divided by the geometric mean of the face areas of the input, the term adds `log(a)` for
-a collapse and `-log(a)` for a split; the sum is divided by the square root of the number of operations
-(see `Isotropy_term`). Only the plan is used.
+a collapse and `-log(a)` for a split, and returns the mean over the operations (see `Isotropy_term`). Only
+the plan is used.
 */
 struct Sizing_term
 {
@@ -44,7 +44,7 @@ struct Sizing_term
       s += is_collapse(op) ? r : -r;
       ++n;
     });
-    return n > 0 ? s / std::sqrt(double(n)) : s;
+    return n > 0 ? s / double(n) : s;
   }
 };
 
