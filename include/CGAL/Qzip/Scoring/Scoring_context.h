@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <unordered_map>
 #include <vector>
@@ -123,6 +124,7 @@ private:
   std::size_t adjacency_garbage = 0;
   std::vector<int> row_buffer; // a row being rebuilt
   std::vector<int> singular_indices; // the singular vertices, by rank
+  std::size_t m_number_of_faces = 0; // at the start of the batch
   std::size_t cut_count = 0; // the border and feature vertices
   std::vector<int> feature_dist;
   bool feature_dist_all_max = false; // INT_MAX everywhere (computed without border and feature vertices)
@@ -571,6 +573,8 @@ private:
       if(pa.y() != pb.y()) return pa.y() < pb.y();
       return pa.z() < pb.z();
     });
+    // (num_faces() of a Surface_mesh also counts the removed faces that the garbage still holds)
+    m_number_of_faces = std::size_t(std::distance(faces(pm).first, faces(pm).second));
     singular_indices.clear();
     for(std::size_t r = 0; r < singular.size(); ++r)
     {
@@ -792,6 +796,12 @@ public:
   }
   /// the geometric mean of the areas of the faces of the mesh given to the optimizer (the uniform target size).
   double mean_face_area() const { return m_mean_face_area; }
+
+  /// the number of singular vertices at the start of the batch (those `nearest_singularities()` finds).
+  std::size_t number_of_singularities() const { return singular_indices.size(); }
+
+  /// the number of faces of the mesh at the start of the batch.
+  std::size_t number_of_faces() const { return m_number_of_faces; }
 
   /// the area of face `f` (half the norm of the sum of the cross products of a fan).
   double face_area(face_descriptor f) const
