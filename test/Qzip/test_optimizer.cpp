@@ -751,7 +751,7 @@ void make_genus3_plate(Surface_mesh& m)
 // left), for the first such seed from 18 on, which it returns. With the isotropy and sizing terms divided by the
 // square root of the number of operations (sessions 15-24), the batches reached the optimum on seeds 0 to 17
 // (before, on 0 to 25): the search starts at 18 so as not to optimize the plate 18 more times on every run (with
-// the means of session 25 it still finds such a seed). Failed surgeries
+// the means and the spacing factor of session 25 it still finds such a seed). Failed surgeries
 // are undone at once, without untangling: with it (the default since session 21) the batches reach the
 // optimum on every seed from 18 to 99.
 unsigned int make_plate_where_batches_stop(Surface_mesh& m)
