@@ -1285,8 +1285,8 @@ void check_same_as_new_context(PolygonMesh& pm,
     fresh(pm, ctx.vertex_point_map(), EdgeIsConstrainedMap(), FaceIsConstrainedMap());
   fresh.begin_batch();
   // the counts the default scoring's electric weight is scaled with (Default_scoring::electric_spacing)
-  std::size_t faces_now = 0, singular_now = 0;
-  for(auto f : faces(pm)) { (void)f; ++faces_now; }
+  const std::size_t faces_now = faces(pm).size();
+  std::size_t singular_now = 0;
   for(vertex_descriptor v : vertices(pm)) if(fresh.defect(v) != 0) ++singular_now;
   assert(ctx.number_of_faces() == faces_now && fresh.number_of_faces() == faces_now);
   assert(ctx.number_of_singularities() == singular_now && fresh.number_of_singularities() == singular_now);

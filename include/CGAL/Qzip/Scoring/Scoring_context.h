@@ -24,7 +24,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <unordered_map>
 #include <vector>
@@ -573,8 +572,8 @@ private:
       if(pa.y() != pb.y()) return pa.y() < pb.y();
       return pa.z() < pb.z();
     });
-    // (num_faces() of a Surface_mesh also counts the removed faces that the garbage still holds)
-    m_number_of_faces = std::size_t(std::distance(faces(pm).first, faces(pm).second));
+    // (the range's size, not num_faces(), which on a Surface_mesh also counts the removed faces its garbage holds)
+    m_number_of_faces = faces(pm).size();
     singular_indices.clear();
     for(std::size_t r = 0; r < singular.size(); ++r)
     {
