@@ -5,7 +5,7 @@
 // usage: benchmark_optimizer [--corpus DIR] [--runs R] [--max-level L] [--skip-corpus] [--skip-large]
 //                            [--skip-genus3] [--measure] [--mesh FILE]... [--trace]
 //                            [--max-batches N] [--patience N] [--count-stop] [--seed S] [--min-level L]
-//                            [--fingerprint] [--seeds N] [--first-seed S] [--time-limit S]
+//                            [--fingerprint] [--seeds N] [--first-seed S] [--time-limit S] [--quality-floor Q]
 //   --runs R       runs per mesh below 100k quads, the median time is reported (default 3)
 //   --max-level L  Catmull-Clark levels of the scaling series (default 4: ~1M quads)
 //   --min-level L  run the scaling series from this level on (default 0; the lower levels are still built)
@@ -19,6 +19,7 @@
 //   --count-stop   stop on No_improvement_stop_predicate (fewer singularities) instead of on progress
 //   --seed S       the random seed of the runs (default 0)
 //   --time-limit S the maximum_running_time of the runs, in seconds (default: none)
+//   --quality-floor Q  the quality_floor of the runs, a scaled Jacobian in (0, 1) (default 0.1)
 //   --seeds N      one run for each of the seeds 0 to N-1 of every selected mesh (--mesh, else the corpus),
 //                  and a table of the spread of the results (final count, its mean and standard error, faces,
 //                  time to the plateau, time until the median final count over the seeds was first reached)
@@ -80,6 +81,7 @@ struct Measure_visitor : public Q::Default_optimizer_visitor<Mesh>
 static bool trace = false;
 static std::size_t max_batches = 200, patience = 20;
 static double time_limit = std::numeric_limits<double>::infinity();
+static double quality_floor = 0.1;
 static unsigned int seed = 0;
 static bool count_stop = false;
 static bool fingerprint = false;
@@ -257,8 +259,8 @@ static Row run(const std::string& name, const Input& input, int runs, bool measu
     tracer.print = trace && i + 1 == runs;
     tracer.start = c0;
     tracer.target = target_count(row.before);
-    row.stats = Q::optimize_singularities(m, Q::parameters::stop_predicate(Bench_stop(),
-                                                 CGAL::parameters::random_seed(seed).visitor(std::ref(tracer)).maximum_running_time(time_limit)));
+    row.stats = Q::optimize_singularities(m, Q::parameters::stop_predicate(Bench_stop(), Q::parameters::quality_floor(quality_floor,
+                                                 CGAL::parameters::random_seed(seed).visitor(std::ref(tracer)).maximum_running_time(time_limit))));
     t.stop();
     times.push_back(t.time());
     cpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
@@ -276,7 +278,7 @@ static Row run(const std::string& name, const Input& input, int runs, bool measu
         input(mm);
         Measure_visitor vis;
         vis.mesh = &mm;
-        Q::optimize_singularities(mm, CGAL::parameters::random_seed(seed).visitor(std::ref(vis)));
+        Q::optimize_singularities(mm, Q::parameters::quality_floor(quality_floor, CGAL::parameters::random_seed(seed).visitor(std::ref(vis))));
         row.exact = std::to_string(vis.exact) + "/" + std::to_string(vis.surgeries);
       }
     }
@@ -416,6 +418,12 @@ int main(int argc, char** argv)
     else if(a == "--max-batches" && i + 1 < argc) max_batches = std::size_t(std::atoi(argv[++i]));
     else if(a == "--patience" && i + 1 < argc) patience = std::size_t(std::atoi(argv[++i]));
     else if(a == "--time-limit" && i + 1 < argc) time_limit = std::atof(argv[++i]);
+    else if(a == "--quality-floor" && i + 1 < argc)
+    {
+      quality_floor = std::atof(argv[++i]);
+      if(!(quality_floor > 0 && quality_floor < 1))
+      { std::cerr << "error: --quality-floor expects a number in (0, 1), got '" << argv[i] << "'" << std::endl; return EXIT_FAILURE; }
+    }
     else if(a == "--count-stop") count_stop = true;
     else if(a == "--seed" && i + 1 < argc) seed = unsigned(std::atoi(argv[++i]));
     else if(a == "--seeds" && i + 1 < argc) seeds = unsigned(std::max(1, std::atoi(argv[++i])));

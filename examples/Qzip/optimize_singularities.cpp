@@ -5,7 +5,7 @@
 //
 // usage: optimize_singularities [IN [OUT]] [--batches N] [--time-limit SECONDS] [--seed S]
 //                               [--feature-angle DEG] [--protect FACES.txt] [--no-smooth] [--weights E,I,S,X,P]
-//                               [--json REPORT]
+//                               [--quality-floor Q] [--json REPORT]
 //
 // Reads IN (default: the bundled Spot, CGAL::data_file_path("meshes/spot_quadrangulated.obj")),
 // removes interior valence-2 vertices and splits valence-6+ ones (preprocess_valences()), optimizes,
@@ -20,6 +20,8 @@
 //   --no-smooth         no smoothing (surgeries that would invert a quad are undone)
 //   --weights E,I,S,X,P the weights of Default_scoring's electric, isotropy, sizing, separatrix and pairing
 //                       terms (default 1,0.02,0.02,0.02,0.3; their effect: benchmark/Qzip/RESULTS.md, session 25)
+//   --quality-floor Q   no edit takes a quad below the scaled Jacobian Q, in (0, 1), unless the worst quad
+//                       around it was already lower (default 0.1; higher keeps better quads, fewer surgeries pass)
 //   --json REPORT       also write the before/after reports as JSON to REPORT
 
 #include "qzip_example_io.h"
@@ -53,7 +55,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 static const char* usage =
   "usage: optimize_singularities [IN [OUT]] [--batches N] [--time-limit SECONDS] [--seed S] "
-  "[--feature-angle DEG] [--protect FACES.txt] [--no-smooth] [--weights E,I,S,X,P] [--json REPORT]";
+  "[--feature-angle DEG] [--protect FACES.txt] [--no-smooth] [--weights E,I,S,X,P] [--quality-floor Q] [--json REPORT]";
 
 // prints progress on stderr
 struct Progress_visitor : public Q::Default_optimizer_visitor<Mesh>
@@ -117,7 +119,7 @@ int main(int argc, char** argv)
 {
   const std::set<std::string> flags = { "--no-smooth", "--help", "-h" };
   const std::set<std::string> with_value = { "--batches", "--time-limit", "--seed", "--feature-angle", "--protect",
-                                              "--weights", "--json" };
+                                              "--weights", "--quality-floor", "--json" };
   if(qzip_example::has_flag(argc, argv, "--help") || qzip_example::has_flag(argc, argv, "-h"))
   {
     std::cout << usage << std::endl;
@@ -159,6 +161,10 @@ int main(int argc, char** argv)
   const std::string angle_s = qzip_example::option_value(argc, argv, "--feature-angle");
   if(!angle_s.empty() && (!parse_number(angle_s, feature_angle) || !(feature_angle >= 0 && feature_angle <= 180)))
   { std::cerr << "error: --feature-angle expects an angle in degrees in [0, 180], got '" << angle_s << "'" << std::endl; return EXIT_FAILURE; }
+  double quality_floor = 0.1;
+  const std::string floor_s = qzip_example::option_value(argc, argv, "--quality-floor");
+  if(!floor_s.empty() && (!parse_number(floor_s, quality_floor) || !(quality_floor > 0 && quality_floor < 1)))
+  { std::cerr << "error: --quality-floor expects a scaled Jacobian in (0, 1), got '" << floor_s << "'" << std::endl; return EXIT_FAILURE; }
   Q::Default_scoring scoring;
   const std::string weights_s = qzip_example::option_value(argc, argv, "--weights");
   if(!weights_s.empty() && !parse_weights(weights_s, scoring))
@@ -240,16 +246,17 @@ int main(int argc, char** argv)
   mesh.remove_property_map(efrozen);
   std::cout << "scoring weights: electric " << scoring.electric_weight << ", isotropy " << scoring.isotropy_weight
             << ", sizing " << scoring.sizing_weight << ", separatrix " << scoring.separatrix_weight << ", pairing "
-            << scoring.pairing_weight << "\n";
+            << scoring.pairing_weight << "; quality floor " << quality_floor << "\n";
   std::cerr << "preprocessing: " << pre.removed_valence_2 << " valence-2 vertices removed, " << pre.vertex_splits
             << " vertex splits" << std::endl;
 
   Progress_visitor progress;
   Q::Optimizer_result stats;
   const bool smooth = !qzip_example::has_flag(argc, argv, "--no-smooth");
-  const auto common = Q::parameters::scoring_functor(scoring, Q::parameters::face_is_constrained_map(fprot,
-                        CGAL::parameters::edge_is_constrained_map(efeat).random_seed(unsigned(seed)).visitor(std::ref(progress))
-                          .maximum_running_time(time_limit)));
+  const auto common = Q::parameters::scoring_functor(scoring, Q::parameters::quality_floor(quality_floor,
+                        Q::parameters::face_is_constrained_map(fprot,
+                          CGAL::parameters::edge_is_constrained_map(efeat).random_seed(unsigned(seed)).visitor(std::ref(progress))
+                            .maximum_running_time(time_limit))));
   if(batches > 0)
     stats = Q::optimize_singularities(mesh, Q::parameters::combine(common, Q::parameters::do_smooth(smooth),
               Q::parameters::stop_predicate(Q::stop_when_either(Q::Batch_count_stop_predicate(batches),

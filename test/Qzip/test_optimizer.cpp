@@ -602,6 +602,73 @@ void test_face_count_tolerance(const std::string& data_dir)
   }
 }
 
+// quality_floor: when no quad of a pure quad input is below the floor, no quad of the result is (the surgeries,
+// the chains of the end game and the smoothing are all guarded by it), on Surface_mesh and Polyhedron_3 alike;
+// the default floor lets the same run go below it (so the floor decides); a floor outside (0, 1) is refused
+// before any edit.
+template <typename Mesh>
+Q::Optimizer_statistics optimize_with_floor(Mesh& m, double floor)
+{
+  make_cc_sphere(m, 3);
+  return Q::optimize_singularities(m, Q::parameters::quality_floor(floor, CGAL::parameters::random_seed(1)));
+}
+
+void test_quality_floor(const std::string& data_dir)
+{
+  Surface_mesh input;
+  make_cc_sphere(input, 3);
+  const long chi = euler_characteristic(input);
+  const Q::Mesh_report in = Q::compute_mesh_report(input);
+  const double floor = 0.5;
+  Surface_mesh with_default, with_floor;
+  const Q::Optimizer_statistics sd = optimize_with_floor(with_default, 0.1);
+  const Q::Optimizer_statistics sf = optimize_with_floor(with_floor, floor);
+  const Q::Mesh_report rd = Q::compute_mesh_report(with_default), rf = Q::compute_mesh_report(with_floor);
+  std::cout << "quality floor: input min SJ " << in.min_scaled_jacobian << ", " << in.total_absolute_defect
+            << " singularities; floor 0.1: min SJ " << rd.min_scaled_jacobian << ", " << sd.number_of_singularities
+            << " singularities, " << sd.number_of_undone_surgeries << " undone; floor " << floor << ": min SJ "
+            << rf.min_scaled_jacobian << ", " << sf.number_of_singularities << " singularities, "
+            << sf.number_of_undone_surgeries << " undone" << std::endl;
+  assert(in.number_of_inverted_quads == 0 && in.min_scaled_jacobian >= floor);
+  check_result(with_default, chi, sd);
+  check_result(with_floor, chi, sf);
+  assert(rd.min_scaled_jacobian < floor);
+  assert(rf.min_scaled_jacobian >= floor);
+  assert(2 * sf.number_of_singularities <= in.total_absolute_defect);
+
+  Polyhedron ph;
+  const Q::Optimizer_statistics sp = optimize_with_floor(ph, floor);
+  check_result(ph, chi, sp);
+  assert(sp.number_of_surgeries == sf.number_of_surgeries && sp.number_of_singularities == sf.number_of_singularities);
+  assert(are_isomorphic(with_floor, ph));
+  assert(sorted_points(with_floor) == sorted_points(ph));
+
+  // a real mesh (pure quads, none below 0.4), with a floor below its worst quad
+  Surface_mesh fandisk;
+  if(!read_mesh(data_dir + "pmp_fandisk_quads.off", fandisk)) { std::cerr << "cannot read the fandisk" << std::endl; assert(false); }
+  const long fandisk_chi = euler_characteristic(fandisk);
+  const Q::Mesh_report fandisk_in = Q::compute_mesh_report(fandisk);
+  assert(all_faces_have_degree(fandisk, 4) && fandisk_in.min_scaled_jacobian >= 0.4);
+  const Q::Optimizer_statistics sfan = Q::optimize_singularities(fandisk, Q::parameters::quality_floor(0.4));
+  const Q::Mesh_report fandisk_out = Q::compute_mesh_report(fandisk);
+  std::cout << "quality floor 0.4 on the fandisk: min SJ " << fandisk_in.min_scaled_jacobian << " -> "
+            << fandisk_out.min_scaled_jacobian << ", " << fandisk_in.total_absolute_defect << " -> "
+            << sfan.number_of_singularities << " singularities" << std::endl;
+  check_result(fandisk, fandisk_chi, sfan);
+  assert(fandisk_out.min_scaled_jacobian >= 0.4);
+  assert(sfan.number_of_singularities < fandisk_in.total_absolute_defect);
+
+  for(double bad : { 0., 1., -0.5, std::numeric_limits<double>::quiet_NaN() })
+  {
+    Surface_mesh m = input;
+    bool refused = false;
+    try { Q::optimize_singularities(m, Q::parameters::quality_floor(bad)); }
+    catch(const CGAL::Precondition_exception&) { refused = true; }
+    assert(refused);
+    assert(are_isomorphic(m, input) && sorted_points(m) == sorted_points(input));
+  }
+}
+
 // ten batches on the Catmull-Clark sphere of level 4 with the given Optimizer_settings::sparse_pairing_distance;
 // checks that each batch executes all its candidates (or the best half, `all` false) and the invariants
 // (`skip_chosen_targets`: see Optimizer_settings; `first_candidates`: the number of candidates of the first batch)
@@ -1463,6 +1530,7 @@ int main(int argc, char** argv)
   test_same_result_after_undos("data/");
   test_replanned_after_undos("data/");
   test_face_count_tolerance("data/");
+  test_quality_floor("data/");
   test_all_candidates_when_sparse();
   test_context_across_batches<Surface_mesh>();
   test_context_across_batches<Polyhedron>();

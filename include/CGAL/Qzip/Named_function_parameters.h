@@ -51,7 +51,7 @@ auto append_np(const NP1& np1, const CGAL::Named_function_parameters<T, Tag, Bas
 /// The named parameters of Qzip: CGAL's own (`CGAL::parameters::vertex_point_map()`, ...) and
 /// `edge_weight_map()`, `face_is_constrained_map()`, `scoring_functor()`, `stop_predicate()`,
 /// `do_smooth()`, `do_end_game()`, `do_look_ahead()`, `number_of_untangling_sweeps()`, `face_count_tolerance()`,
-/// `simulate_chain()`. A Qzip parameter starts a pack or is prepended to one
+/// `quality_floor()`, `simulate_chain()`. A Qzip parameter starts a pack or is prepended to one
 /// (`face_is_constrained_map(fcm, CGAL::parameters::vertex_point_map(vpm))`); `combine()` joins packs.
 namespace parameters {
 

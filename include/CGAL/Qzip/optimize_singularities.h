@@ -75,8 +75,9 @@ three edges of a path already operated on in this batch (a singularity whose bes
 tries its next ones instead), unless all those surgeries were undone: then the mesh there is as it was, and
 the candidate is found again by its positions and planned again. After each surgery its scar is smoothed (see `smooth_quad_mesh()`); if the
 surgery leaves more inverted quads (scaled Jacobian `<= 0`) near its path than there were, or a quad worse
-than both the worst one before and 0.1, the scar is untangled (each vertex with a quad below 0.1 moves to the
-best of a few positions on the surface, at most `number_of_untangling_sweeps` sweeps) and checked again; if it still fails (or the number
+than both the worst one before and `quality_floor` (0.1 by default), the scar is untangled (each vertex with a
+quad below the floor moves to the best of a few positions on the surface, at most `number_of_untangling_sweeps`
+sweeps) and checked again; if it still fails (or the number
 of faces is outside `face_count_tolerance`), the smoothing
 and the surgery are undone exactly, and the same surgery (same positions of its ends, same motion) is not
 a candidate again until a batch lowers the number of singularities. A kept Q-zip moves its pair by about
@@ -106,7 +107,11 @@ split there, and both copies move a third of the way towards the midpoint of the
 smoothing moves no border vertex, slides the vertices of feature curves along the input feature polylines
 and keeps feature corners and the vertices of protected faces in place. So feature curves keep their
 vertices and edges, feature corners and protected faces keep their positions bit for bit; since surgeries
-and smoothing are both guarded, no inverted quad appears when the input has none. When smoothing is on,
+and smoothing are both guarded, no inverted quad appears when the input has none, and when no quad of a
+pure quad input is below `quality_floor`, none of the result is either. A higher floor keeps better quads at
+the price of fewer kept surgeries (on the rocker arm of the benchmark, floor 0.2 ends about half a singularity
+higher on average than 0.1, floor 0.05 about one lower, in 10% less time; `benchmark/Qzip/RESULTS.md`,
+session 28). When smoothing is on,
 the vertices stay on the input surface (`pm` as given, its faces triangulated): the vertices a surgery
 touched are put at their closest point on it before its scar is smoothed, every smoothing move is projected
 onto it, and the vertices the pairing of triangles placed are put onto it when their quads accept it (a vertex
@@ -170,9 +175,16 @@ Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valen
   \cgalParamNEnd
   \cgalParamNBegin{number_of_untangling_sweeps}
     \cgalParamDescription{(Qzip) a surgery whose smoothed scar has more inverted quads than before, or a quad worse
-                          than both the worst one before and 0.1, is untangled with at most this many sweeps and
-                          checked again before it is undone (0: undone at once; ignored without smoothing)}
+                          than both the worst one before and `quality_floor`, is untangled with at most this many
+                          sweeps and checked again before it is undone (0: undone at once; ignored without smoothing)}
     \cgalParamDefault{20}
+  \cgalParamNEnd
+  \cgalParamNBegin{quality_floor}
+    \cgalParamDescription{(Qzip) the scaled Jacobian (see `quad_scaled_jacobian()`) below which no surgery, chain of
+                          the end game nor smoothing move takes a quad, unless the worst quad around it was already
+                          lower and does not get worse: a surgery is undone if its scar ends with a quad below both}
+    \cgalParamType{`double`, in `(0, 1)`}
+    \cgalParamDefault{0.1}
   \cgalParamNEnd
   \cgalParamNBegin{face_count_tolerance}
     \cgalParamDescription{(Qzip) a candidate that would take the number of faces farther than this fraction
@@ -202,6 +214,7 @@ Interior vertices of valence 2 or 6 and more cannot move: call `preprocess_valen
 
 \returns the statistics of the run (see `Optimizer_result`)
 \pre `pm` is a valid polygon mesh
+\pre `quality_floor`, if given, is in `(0, 1)`
 \sa `execute_qzip()`, `smooth_quad_mesh()`, `preprocess_valences()`
 */
 template <typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
@@ -247,6 +260,8 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
   settings.untangling_sweeps = choose_parameter(get_parameter(np, Qzip::internal_np::untangling_sweeps), 20);
   settings.face_count_tolerance = choose_parameter(get_parameter(np, Qzip::internal_np::face_count_tolerance), 0.1);
   settings.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+  settings.quality_floor = choose_parameter(get_parameter(np, Qzip::internal_np::quality_floor), 0.1);
+  CGAL_precondition(settings.quality_floor > 0 && settings.quality_floor < 1);
 
   settings.input_number_of_faces = faces(pm).size();
 

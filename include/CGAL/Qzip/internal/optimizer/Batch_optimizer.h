@@ -58,6 +58,8 @@ struct Optimizer_settings
   std::size_t input_number_of_faces = 0;
   unsigned int seed = 0;
   std::size_t neighbors_per_type = 3;
+  // no surgery nor smoothing move leaves a quad worse than both this scaled Jacobian and the worst quad
+  // around it before (the named parameter `quality_floor`)
   double quality_floor = 0.1;
   bool end_game = true;
   std::size_t max_end_game_rounds = 10;
