@@ -108,9 +108,9 @@ smoothing moves no border vertex, slides the vertices of feature curves along th
 and keeps feature corners and the vertices of protected faces in place. So feature curves keep their
 vertices and edges, feature corners and protected faces keep their positions bit for bit; since surgeries
 and smoothing are both guarded, no inverted quad appears when the input has none, and when no quad of a
-pure quad input is below `quality_floor`, none of the result is either. A higher floor keeps better quads at
-the price of fewer kept surgeries (on the rocker arm of the benchmark, floor 0.2 ends about half a singularity
-higher on average than 0.1, floor 0.05 about one lower, in 10% less time; `benchmark/Qzip/RESULTS.md`,
+pure quad input is below `quality_floor`, none of the result is either. A higher floor keeps better quads
+and undoes more surgeries: over the benchmark's corpus (21 meshes, two seeds) floor 0.3 ends with 8% more
+singularities in 50% more time than 0.1, floor 0.05 with 2% fewer in 5% less time (`benchmark/Qzip/RESULTS.md`,
 session 28). When smoothing is on,
 the vertices stay on the input surface (`pm` as given, its faces triangulated): the vertices a surgery
 touched are put at their closest point on it before its scar is smoothed, every smoothing move is projected
