@@ -110,7 +110,7 @@ vertices and edges, feature corners and protected faces keep their positions bit
 and smoothing are both guarded, no inverted quad appears when the input has none, and when no quad of a
 pure quad input is below `quality_floor`, none of the result is either. A higher floor keeps better quads
 and undoes more surgeries: over the benchmark's corpus (21 meshes, two seeds) floor 0.3 ends with 8% more
-singularities in 50% more time than 0.1, floor 0.05 with 2% fewer in 5% less time (`benchmark/Qzip/RESULTS.md`,
+singularities in 51% more time than 0.1, floor 0.05 with 2% fewer in 6% less time (`benchmark/Qzip/RESULTS.md`,
 session 28). When smoothing is on,
 the vertices stay on the input surface (`pm` as given, its faces triangulated): the vertices a surgery
 touched are put at their closest point on it before its scar is smoothed, every smoothing move is projected
