@@ -658,6 +658,25 @@ void test_quality_floor(const std::string& data_dir)
   assert(fandisk_out.min_scaled_jacobian >= 0.4);
   assert(sfan.number_of_singularities < fandisk_in.total_absolute_defect);
 
+  // smooth_quad_mesh() with a floor: with the optimizer's, the result stays above it; with a floor above the
+  // worst quad, the worst quad gets no worse and the moves that would take a quad below the floor are refused
+  // (fewer moves than with no floor, whose moves only keep the quads valid)
+  std::size_t moves_without_floor = 0;
+  for(double smoothing_floor : { 0., 0.4, 0.9 })
+  {
+    Surface_mesh smoothed = fandisk;
+    std::vector<boost::graph_traits<Surface_mesh>::vertex_descriptor> all(vertices(smoothed).begin(), vertices(smoothed).end());
+    const std::size_t moves = Q::smooth_quad_mesh(smoothed, all, Q::parameters::quality_floor(smoothing_floor,
+                                                    CGAL::parameters::number_of_iterations(20)));
+    const Q::Mesh_report rs = Q::compute_mesh_report(smoothed);
+    std::cout << "smooth_quad_mesh, floor " << smoothing_floor << ": " << moves << " moves, min SJ "
+              << fandisk_out.min_scaled_jacobian << " -> " << rs.min_scaled_jacobian << std::endl;
+    assert(moves > 0 && rs.number_of_inverted_quads == 0);
+    assert(rs.min_scaled_jacobian >= (std::min)(smoothing_floor, fandisk_out.min_scaled_jacobian));
+    if(smoothing_floor == 0) moves_without_floor = moves;
+    if(smoothing_floor == 0.9) assert(moves < moves_without_floor);
+  }
+
   for(double bad : { 0., 1., -0.5, std::numeric_limits<double>::quiet_NaN() })
   {
     Surface_mesh m = input;

@@ -494,9 +494,9 @@ two feature neighbors and is put back onto the feature polyline as it was before
 curves keep their shape and their edges; feature corners (one, three or more constrained edges, or a
 sharper turn), border vertices and vertices of protected faces do not move (protected regions and the
 border are kept bit for bit). A move is kept if the incident quads stay valid (scaled Jacobian `> 0`, see
-`quad_scaled_jacobian()`), or else if the smallest of their scaled Jacobians does not decrease: no quad gets
-inverted around a vertex whose quads were all valid, but beside an inverted quad a move that improves it may
-invert another one.
+`quad_scaled_jacobian()`) and at least `quality_floor`, or else if the smallest of their scaled Jacobians does not
+decrease: no quad gets inverted (nor taken below the floor) around a vertex whose quads were all valid (and at least
+the floor), but beside an inverted quad a move that improves it may invert another one.
 
 \tparam PolygonMesh a model of `FaceListGraph`
 \tparam VertexRange a range of vertex descriptors of `pm`
@@ -525,12 +525,19 @@ invert another one.
     \cgalParamDescription{whether moved vertices are projected back onto the surface}
     \cgalParamDefault{`true`}
   \cgalParamNEnd
+  \cgalParamNBegin{quality_floor}
+    \cgalParamDescription{(Qzip) the scaled Jacobian below which a move may not take a quad, unless the worst quad
+                          around the vertex was already lower and does not get worse (as in `optimize_singularities()`)}
+    \cgalParamType{`double`, in `[0, 1)`}
+    \cgalParamDefault{0: moves are only kept valid}
+  \cgalParamNEnd
   \cgalParamNBegin{geom_traits}
     \cgalParamDescription{an instance of a geometric traits class}
     \cgalParamDefault{a \cgal Kernel deduced from the point type}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 \returns the number of accepted vertex moves
+\pre `quality_floor`, if given, is in `[0, 1)`
 */
 template <typename PolygonMesh, typename VertexRange,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -550,8 +557,11 @@ std::size_t smooth_quad_mesh(PolygonMesh& pm, const VertexRange& vertex_range,
                               Static_boolean_property_map<face_descriptor, false>());
   const int iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 5);
   const bool project = choose_parameter(get_parameter(np, CGAL::internal_np::do_project), true);
+  const double quality_floor = choose_parameter(get_parameter(np, Qzip::internal_np::quality_floor), 0.);
+  CGAL_precondition(quality_floor >= 0 && quality_floor < 1);
   internal::Quad_smoother<PolygonMesh, decltype(vpm), decltype(ecm), decltype(fcm), Geom_traits>
     smoother(pm, vpm, ecm, fcm, project);
+  smoother.quality_floor = quality_floor;
   std::vector<typename GT::vertex_descriptor> region(std::begin(vertex_range), std::end(vertex_range));
   return smoother.smooth(region, iterations);
 }
