@@ -27,7 +27,6 @@
 #include <CGAL/Real_timer.h>
 
 #include <algorithm>
-#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -252,15 +251,19 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
   Default_optimizer_visitor<PolygonMesh> default_visitor;
   Visitor visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
 
-  internal::Optimizer_settings settings;
-  settings.smooth = choose_parameter(get_parameter(np, Qzip::internal_np::smoothing), true);
-  settings.end_game = choose_parameter(get_parameter(np, Qzip::internal_np::end_game), true);
-  settings.look_ahead = choose_parameter(get_parameter(np, Qzip::internal_np::look_ahead), true);
-  settings.smoothing_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 5);
-  settings.untangling_sweeps = choose_parameter(get_parameter(np, Qzip::internal_np::untangling_sweeps), 20);
-  settings.face_count_tolerance = choose_parameter(get_parameter(np, Qzip::internal_np::face_count_tolerance), 0.1);
-  settings.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
-  settings.quality_floor = choose_parameter(get_parameter(np, Qzip::internal_np::quality_floor), 0.1);
+  internal::Optimizer_settings settings; // the defaults of the named parameters
+  settings.smooth = choose_parameter(get_parameter(np, Qzip::internal_np::smoothing), settings.smooth);
+  settings.end_game = choose_parameter(get_parameter(np, Qzip::internal_np::end_game), settings.end_game);
+  settings.look_ahead = choose_parameter(get_parameter(np, Qzip::internal_np::look_ahead), settings.look_ahead);
+  settings.smoothing_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps),
+                                                   settings.smoothing_iterations);
+  settings.untangling_sweeps = choose_parameter(get_parameter(np, Qzip::internal_np::untangling_sweeps),
+                                                settings.untangling_sweeps);
+  settings.face_count_tolerance = choose_parameter(get_parameter(np, Qzip::internal_np::face_count_tolerance),
+                                                   settings.face_count_tolerance);
+  settings.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), settings.seed);
+  settings.quality_floor = choose_parameter(get_parameter(np, Qzip::internal_np::quality_floor),
+                                            settings.quality_floor);
   CGAL_precondition(settings.quality_floor > 0 && settings.quality_floor < 1);
 
   settings.input_number_of_faces = faces(pm).size();
@@ -291,7 +294,7 @@ Optimizer_result optimize_singularities(PolygonMesh& pm, const NamedParameters& 
   }
 
   settings.time_limit = choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
-                                         (std::numeric_limits<double>::infinity)()) - timer.time();
+                                         settings.time_limit) - timer.time();
   internal::Batch_optimizer<PolygonMesh, VPM, ECM, FCM, Geom_traits>
     optimizer(pm, vpm, ecm, fcm, smoother, scoring, stop, visitor, settings);
   static_cast<Optimizer_statistics&>(result) = optimizer.run();
