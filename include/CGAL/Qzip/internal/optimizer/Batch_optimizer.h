@@ -151,7 +151,8 @@ class Batch_optimizer
   // every mark of the batch (see restore_marks())
   std::vector<std::pair<vertex_descriptor, unsigned int> > marks_in_batch;
   // the partners of the chosen candidates of the batch (see watch_partners()): partner_id is
-  // partner_base + 1 + their index, and a partner is lost once the region of a surgery covers it
+  // partner_base + 1 + their index, and a partner is lost once the region of a surgery covers it, unless
+  // it was an end of that surgery and the surgery was kept: then it is where the surgery moved it
   Id_map partner_id;
   std::size_t partner_base = 0;
   std::vector<vertex_descriptor> partner_vertices;
@@ -674,6 +675,8 @@ private:
     if(!keeps_face_count(plan)) { ++stats.number_of_skipped_surgeries; return SKIPPED; }
     // read once the path is known to be alive (a skipped plan may name dead vertices), before the ends move
     const Surgery_key surgery_key = require_decrease ? cand.key : key(plan);
+    // asked before the region is marked (which loses the partners in it)
+    const std::size_t source_watched = watched_partner(plan.source), target_watched = watched_partner(plan.target);
     // A surgery only removes vertices within three edges of its path (the far corners of the clean-up);
     // the vertices at distance four (the shell) and five (stamped `outer_epoch`) are never touched: they
     // stay alive through an undo, and the region they enclose holds the re-created vertices, whose
@@ -805,6 +808,8 @@ private:
     ++stats.surgeries_in_last_batch;
     visitor.on_surgery(plan, cand.score, -cand.predicted_cancellations);
     if(moved != nullptr) *moved = std::make_pair(r.moved_source, r.moved_target);
+    partner_moved(source_watched, r.moved_source);
+    partner_moved(target_watched, r.moved_target);
     return KEPT;
   }
 
@@ -888,12 +893,36 @@ private:
 
   // the closest singularity of the opposite sign of each end of the candidate, the pair excluded (what
   // Pairing_term pulls towards), at the start of the batch, watched: once the region of a surgery covers
-  // it (before the surgery, when all its vertices are alive), it may be gone and follow() stops
+  // it (before the surgery, when all its vertices are alive), it may be gone and follow() stops, unless it
+  // was an end of a kept surgery (see partner_moved())
   std::pair<std::size_t, std::size_t> watch_partners(const Scored& c)
   {
     const vertex_descriptor s = c.plan.source, t = c.plan.target;
     return std::make_pair(watch(ctx.closest_opposite_singularity(s, ctx.defect(s), s, t).vertex),
                           watch(ctx.closest_opposite_singularity(t, ctx.defect(t), s, t).vertex));
+  }
+
+  // the index of the watched partner at v, alive, if it is not lost (no_partner otherwise). A partner
+  // that is not lost was never covered by the region of a surgery: its vertex is alive, and a vertex equal to
+  // it is it (partner_id may be stale on a vertex a surgery re-created, on Polyhedron_3).
+  std::size_t watched_partner(vertex_descriptor v) const
+  {
+    for(std::size_t i = 0; i < partner_vertices.size(); ++i)
+      if(partner_vertices[i] == v && !partner_lost[i]) return i;
+    return no_partner;
+  }
+
+  // after a kept surgery, one of whose ends was the watched partner `i` (no_partner: none): if the surgery
+  // knows where that end went (`to`, not null_vertex()), the partner is there and no longer lost. On the
+  // gargoyle's Catmull-Clark level 4, whose singularities are sparse, about half of the follow() calls that
+  // stopped at once did so because a partner had been moved by an earlier surgery of the batch (RESULTS.md,
+  // session 29).
+  void partner_moved(std::size_t i, vertex_descriptor to)
+  {
+    if(i == no_partner || to == GT::null_vertex()) return;
+    partner_vertices[i] = to;
+    partner_lost[i] = 0;
+    put(partner_id, to, partner_base + 1 + i);
   }
 
   // the distances from `from` to the vertices of `queries` on the mesh as it is now (-1 for those not
@@ -930,25 +959,25 @@ private:
 
   // After a kept Q-zip of a pair along a path of `length` edges, the pair now at `moved`, its ends pulled
   // towards their `partners` (see watch_partners()): Q-zips the pair again along a shortest path between its
-  // new places while each end is still more than `follow_min_distance` edges from its partner and no
-  // surgery came near the partners, a plan brings the ends closer to their partners in sum (of the four
-  // motions, the one whose landings are closest to them, then the one that keeps the number of faces
-  // closest to the initial one) and the surgery is kept (the same checks as in a batch, except that it may
-  // operate on the region of the previous Q-zips of the pair). Far from their partners, singularities thus
-  // travel several edges in one batch instead of one.
+  // new places while each end is still more than `follow_min_distance` edges from its partner, no surgery
+  // came near the partners (but those that moved them, see partner_moved()), a plan brings the ends closer
+  // to their partners in sum (of the four motions, the one whose landings are closest to them, then the one
+  // that keeps the number of faces closest to the initial one) and the surgery is kept (the same checks as in
+  // a batch, except that it may operate on the region of the previous Q-zips of the pair). Far from their
+  // partners, singularities thus travel several edges in one batch instead of one.
   template <typename NP>
   void follow(std::pair<vertex_descriptor, vertex_descriptor> moved, std::pair<std::size_t, std::size_t> partners,
               std::size_t length, const NP& plan_np)
   {
     if(partners.first == no_partner || partners.second == no_partner || partners.first == partners.second) return;
-    const std::pair<vertex_descriptor, vertex_descriptor> partner(partner_vertices[partners.first],
-                                                                  partner_vertices[partners.second]);
     int previous = (std::numeric_limits<int>::max)(); // the actual sum of the distances to the partners: it must drop
     for(;;)
     {
       const vertex_descriptor s = moved.first, t = moved.second;
       if(s == GT::null_vertex() || t == GT::null_vertex() || s == t) return;
       if(partner_lost[partners.first] || partner_lost[partners.second]) return;
+      const std::pair<vertex_descriptor, vertex_descriptor> partner(partner_vertices[partners.first],
+                                                                    partner_vertices[partners.second]);
       if(!can_move_now(s) || !can_move_now(t)) return;
       const std::vector<vertex_descriptor> path = shortest_path_now(s, t, length + 2);
       if(path.empty()) return;
