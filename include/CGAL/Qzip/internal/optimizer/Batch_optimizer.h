@@ -707,6 +707,11 @@ private:
       else shell.push_back(region[i]);
     }
     mark(inner);
+    // a watched partner at an end is lost now (the end is in `inner`) and, if the surgery is kept, found
+    // again where it moved (see partner_moved()); the end's vertex may be removed, and the vertex that takes
+    // its place, on Polyhedron_3 at the same address with its properties, must not carry its id
+    if(source_watched != no_partner) put(partner_id, plan.source, std::size_t(0));
+    if(target_watched != no_partner) put(partner_id, plan.target, std::size_t(0));
     // the vertices of the region that lie in a scar of this batch, by position: an undo re-creates the
     // removed vertices at the same places, with new descriptors (which may be recycled, with or without
     // their former stamps, depending on the mesh type), and they must be in the scars as before
