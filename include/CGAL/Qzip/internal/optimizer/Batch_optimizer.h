@@ -708,8 +708,9 @@ private:
     }
     mark(inner);
     // a watched partner at an end is lost now (the end is in `inner`) and, if the surgery is kept, found
-    // again where it moved (see partner_moved()); the end's vertex may be removed, and the vertex that takes
-    // its place, on Polyhedron_3 at the same address with its properties, must not carry its id
+    // again where it moved (see partner_moved()). The end's vertex must not carry its id any more: it may
+    // stay, no longer singular, or be removed and its place taken by another vertex (on Polyhedron_3 at the
+    // same address, with its properties), and a later surgery covering it would lose the moved partner.
     if(source_watched != no_partner) put(partner_id, plan.source, std::size_t(0));
     if(target_watched != no_partner) put(partner_id, plan.target, std::size_t(0));
     // the vertices of the region that lie in a scar of this batch, by position: an undo re-creates the
@@ -909,7 +910,7 @@ private:
 
   // the index of the watched partner at v, alive, if it is not lost (no_partner otherwise). A partner
   // that is not lost was never covered by the region of a surgery: its vertex is alive, and a vertex equal to
-  // it is it (partner_id may be stale on a vertex a surgery re-created, on Polyhedron_3).
+  // it is it (partner_id may be stale on a vertex that took the place of a removed one, on Polyhedron_3).
   std::size_t watched_partner(vertex_descriptor v) const
   {
     for(std::size_t i = 0; i < partner_vertices.size(); ++i)
