@@ -842,8 +842,10 @@ private:
 
   // a shortest path from s to t through passable vertices on the mesh as it is now, if one has at most
   // `max_length` edges (empty otherwise): the path to t is known when t is discovered. One walk around each
-  // vertex expanded both tells whether it is passable and lists its neighbors.
-  std::vector<vertex_descriptor> shortest_path_now(vertex_descriptor s, vertex_descriptor t, std::size_t max_length)
+  // vertex expanded both tells whether it is passable and lists its neighbors. With `in_pair_region`, only
+  // through the vertices that the surgeries of the current pair covered first in this batch (see mark()).
+  std::vector<vertex_descriptor> shortest_path_now(vertex_descriptor s, vertex_descriptor t, std::size_t max_length,
+                                                   bool in_pair_region)
   {
     if(s == t) return std::vector<vertex_descriptor>(1, s);
     ++search_epoch;
@@ -869,6 +871,7 @@ private:
       for(const vertex_descriptor w : ring)
       {
         if(get(search_stamp, w) == search_epoch) continue;
+        if(in_pair_region && w != t && get(op_stamp, w) < first_of_pair) continue;
         if(w == t)
         {
           std::vector<vertex_descriptor> path(1, t);
@@ -985,7 +988,12 @@ private:
       const std::pair<vertex_descriptor, vertex_descriptor> partner(partner_vertices[partners.first],
                                                                     partner_vertices[partners.second]);
       if(!can_move_now(s) || !can_move_now(t)) return;
-      const std::vector<vertex_descriptor> path = shortest_path_now(s, t, length + 2);
+      // The new ends lie in the region of the pair's last Q-zip, which holds a path between them as short as
+      // any on the mesh in about 97-99% of the cases: searched there first (a few hundred vertices, instead of
+      // a ball of the path's length around s), then on the whole mesh (RESULTS.md, session 30). A path in that
+      // region is never skipped by execute(): the region of another surgery of the batch is not in it.
+      std::vector<vertex_descriptor> path = shortest_path_now(s, t, length + 2, true);
+      if(path.empty()) path = shortest_path_now(s, t, length + 2, false);
       if(path.empty()) return;
       length = path.size() - 1;
       std::vector<Surgery_plan<PolygonMesh> > plans;
