@@ -968,12 +968,13 @@ private:
 
   // After a kept Q-zip of a pair along a path of `length` edges, the pair now at `moved`, its ends pulled
   // towards their `partners` (see watch_partners()): Q-zips the pair again along a shortest path between its
-  // new places while each end is still more than `follow_min_distance` edges from its partner, no surgery
-  // came near the partners (but those that moved them, see partner_moved()), a plan brings the ends closer
-  // to their partners in sum (of the four motions, the one whose landings are closest to them, then the one
-  // that keeps the number of faces closest to the initial one) and the surgery is kept (the same checks as in
-  // a batch, except that it may operate on the region of the previous Q-zips of the pair). Far from their
-  // partners, singularities thus travel several edges in one batch instead of one.
+  // new places (within the region of its earlier Q-zips if one is there, see below) while each end is still
+  // more than `follow_min_distance` edges from its partner, no surgery came near the partners (but those that
+  // moved them, see partner_moved()), a plan brings the ends closer to their partners in sum (of the four
+  // motions, the one whose landings are closest to them, then the one that keeps the number of faces closest
+  // to the initial one) and the surgery is kept (the same checks as in a batch, except that it may operate on
+  // the region of the previous Q-zips of the pair). Far from their partners, singularities thus travel
+  // several edges in one batch instead of one.
   template <typename NP>
   void follow(std::pair<vertex_descriptor, vertex_descriptor> moved, std::pair<std::size_t, std::size_t> partners,
               std::size_t length, const NP& plan_np)
